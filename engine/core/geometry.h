@@ -1,0 +1,56 @@
+#pragma once
+// Plain geometric value types shared by every module (local-frame doubles, metres).
+
+#include <Eigen/Core>
+
+#include <limits>
+
+namespace linesurf {
+
+using Vec3 = Eigen::Vector3d;
+
+/// A 3D line segment between two endpoints.
+struct Segment3 {
+  Vec3 p1 = Vec3::Zero();
+  Vec3 p2 = Vec3::Zero();
+
+  [[nodiscard]] double Length() const { return (p2 - p1).norm(); }
+  [[nodiscard]] Vec3 Midpoint() const { return 0.5 * (p1 + p2); }
+};
+
+/// A plane through `point` with unit `normal`; signed distance n.(x - point).
+struct Plane3 {
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();
+
+  [[nodiscard]] double SignedDistance(const Vec3& x) const { return normal.dot(x - point); }
+  [[nodiscard]] double Offset() const { return -normal.dot(point); }  ///< d in n.x + d = 0
+};
+
+/// An axis-aligned box.
+struct Box3 {
+  Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
+
+  [[nodiscard]] bool IsEmpty() const { return !(min.array() <= max.array()).all(); }
+  void Extend(const Vec3& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  [[nodiscard]] Vec3 Extent() const { return max - min; }
+  [[nodiscard]] Vec3 Center() const { return 0.5 * (min + max); }
+  [[nodiscard]] bool Contains(const Vec3& p) const {
+    return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
+  }
+};
+
+/// Rigid transform restricted to a translation: world = local + translation. Recentring is all
+/// linesurf needs (georeferenced inputs sit 1e6 m from the origin).
+struct Rigid3 {
+  Vec3 translation = Vec3::Zero();
+
+  [[nodiscard]] Vec3 Apply(const Vec3& local) const { return local + translation; }
+  [[nodiscard]] Vec3 ApplyInverse(const Vec3& world) const { return world - translation; }
+};
+
+}  // namespace linesurf

@@ -1,0 +1,8 @@
+// GoogleTest entry point shared by all linesurf test executables.
+
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

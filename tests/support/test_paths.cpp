@@ -1,0 +1,42 @@
+#include "tests/support/test_paths.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace linesurf::testing {
+
+std::optional<std::filesystem::path> SharedDir() {
+  const char* dir = std::getenv("LINESURF_SHARED_DIR");
+  if (dir == nullptr || !std::filesystem::is_directory(dir)) return std::nullopt;
+  return std::filesystem::path(dir);
+}
+
+std::optional<std::filesystem::path> AndalusianInput() {
+  const auto shared = SharedDir();
+  if (!shared) return std::nullopt;
+  auto path = *shared / "data" / "andalusian" / "input_lines_from_residuals.json";
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return path;
+}
+
+std::filesystem::path BinDir() {
+  const char* dir = std::getenv("LINESURF_BIN_DIR");
+  return dir != nullptr ? std::filesystem::path(dir) : std::filesystem::current_path();
+}
+
+std::filesystem::path FreshTempDir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = "linesurf_test";
+  if (info != nullptr) name += std::string("_") + info->test_suite_name() + "_" + info->name();
+  for (char& c : name) {
+    if (c == '/') c = '_';
+  }
+  auto dir = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace linesurf::testing

@@ -1,0 +1,24 @@
+#pragma once
+// Locations handed to tests by CTest (never baked into the code).
+
+#include <filesystem>
+#include <optional>
+
+namespace linesurf::testing {
+
+/// ../shared beside the repository (LINESURF_SHARED_DIR), if present.
+std::optional<std::filesystem::path> SharedDir();
+/// The Andalusian input JSON, if ../shared is present.
+std::optional<std::filesystem::path> AndalusianInput();
+/// The directory holding the built linesurf executable (LINESURF_BIN_DIR).
+std::filesystem::path BinDir();
+/// A fresh, empty temporary directory unique to the running test.
+std::filesystem::path FreshTempDir();
+
+}  // namespace linesurf::testing
+
+/// Skips the current test with a clear message when the Andalusian data is absent.
+#define LINESURF_REQUIRE_ANDALUSIAN(path_var)                                                    \
+  const auto path_var##_opt = ::linesurf::testing::AndalusianInput();                            \
+  if (!path_var##_opt) GTEST_SKIP() << "../shared/data/andalusian is absent: real-data test skipped"; \
+  const std::filesystem::path path_var = *path_var##_opt

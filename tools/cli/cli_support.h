@@ -1,0 +1,49 @@
+#pragma once
+// Shared plumbing of the linesurf subcommands: exit codes, error printing, progress on stderr.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "linesurf/error.h"
+#include "engine/core/run_context.h"
+
+namespace linesurf::cli {
+
+/// Exit codes are contract (documented in docs/user/cli.md).
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUsage = 2,
+  kExitInvalidInput = 3,
+  kExitFailed = 4,
+  kExitCancelled = 5,
+  kExitInternal = 70,
+};
+
+/// Options every subcommand shares.
+struct CommonOptions {
+  bool quiet = false;
+  int threads = 0;
+};
+
+/// A subcommand: its CLI11 app and the function that runs it after parsing.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// Maps a library error to the CLI exit code.
+int ExitCodeFor(ErrorCode code);
+/// Prints "linesurf: error: <message>" to stderr and returns the exit code for `error`.
+int ReportError(const Error& error);
+/// A RunContext whose progress goes to stderr (unless quiet) and whose cancel flag follows
+/// SIGINT/SIGTERM.
+void ConfigureRunContext(const CommonOptions& common, RunContext& ctx);
+/// Prints a warning line to stderr unless quiet.
+void PrintWarning(const CommonOptions& common, const std::string& message);
+/// Runs `fn`, turning any escaping exception into an error message and exit code.
+int GuardedRun(const std::function<int()>& fn);
+
+}  // namespace linesurf::cli

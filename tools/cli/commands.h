@@ -1,0 +1,10 @@
+#pragma once
+// Registration functions of the subcommands, one per cmd_<name>.cpp.
+
+#include "tools/cli/cli_support.h"
+
+namespace linesurf::cli {
+
+Command AddVersionCommand(CLI::App& app, CommonOptions& common);
+
+}  // namespace linesurf::cli

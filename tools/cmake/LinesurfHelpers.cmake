@@ -1,0 +1,50 @@
+# linesurf_add_module(NAME <target> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+#   One static, position-independent library per module with the project's warnings.
+function(linesurf_add_module)
+  cmake_parse_arguments(ARG "" "NAME" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
+  target_include_directories(${ARG_NAME} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/engine/include>)
+  target_link_libraries(${ARG_NAME} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  linesurf_set_warnings(${ARG_NAME})
+endfunction()
+
+# Our own targets only: third-party headers come in as SYSTEM through imported targets.
+function(linesurf_set_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+endfunction()
+
+# linesurf_add_test(MODULE <name> SOURCES ... DEPS ... [LABELS ...])
+#   One GoogleTest executable per module; tests are named <module>/Suite.Case.
+#   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent.
+function(linesurf_add_test)
+  cmake_parse_arguments(ARG "" "MODULE" "SOURCES;DEPS;LABELS" ${ARGN})
+  if(NOT LINESURF_BUILD_TESTS)
+    return()
+  endif()
+  set(target linesurf_test_${ARG_MODULE})
+  add_executable(${target} ${ARG_SOURCES})
+  target_link_libraries(${target} PRIVATE ${ARG_DEPS} linesurf_testing GTest::gtest GTest::gmock)
+  linesurf_set_warnings(${target})
+  if(NOT ARG_LABELS)
+    set(ARG_LABELS unit)
+  endif()
+  gtest_discover_tests(${target}
+    TEST_PREFIX "${ARG_MODULE}/"
+    PROPERTIES LABELS "${ARG_LABELS}"
+      ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;LINESURF_BIN_DIR=${CMAKE_BINARY_DIR}/bin"
+    DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# linesurf_add_benchmark(MODULE <name> SOURCES ... DEPS ...)
+function(linesurf_add_benchmark)
+  cmake_parse_arguments(ARG "" "MODULE" "SOURCES;DEPS" ${ARGN})
+  if(NOT LINESURF_BUILD_BENCHMARKS)
+    return()
+  endif()
+  set(target linesurf_bench_${ARG_MODULE})
+  add_executable(${target} ${ARG_SOURCES})
+  target_link_libraries(${target} PRIVATE ${ARG_DEPS} benchmark::benchmark)
+  linesurf_set_warnings(${target})
+endfunction()
