@@ -1,0 +1,219 @@
+#include "tools/eval/mesh_topology.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <tuple>
+#include <vector>
+
+#include "engine/core/exception.h"
+
+namespace linesurf {
+namespace {
+
+constexpr const char* kStage = "check_mesh_topology";
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+/// Union-find with path halving; unions keep the smaller root so results do not depend on order.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  std::size_t Find(std::size_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void Union(std::size_t a, std::size_t b) {
+    a = Find(a);
+    b = Find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+  std::size_t CountRoots(std::size_t n) {
+    std::size_t roots = 0;
+    for (std::size_t i = 0; i < n; ++i) roots += Find(i) == i ? 1 : 0;
+    return roots;
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+/// Maps every vertex to the first vertex at the bit-identical position.
+std::vector<std::uint32_t> WeldIdenticalVertices(const PolygonMesh& mesh, std::size_t& num_welded) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0U);
+  const auto key = [&](std::uint32_t v) {
+    const Vec3& p = mesh.vertices[v];
+    return std::make_tuple(p.x(), p.y(), p.z(), v);
+  };
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  std::vector<std::uint32_t> weld(n);
+  num_welded = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool same = i > 0 && mesh.vertices[order[i]] == mesh.vertices[order[i - 1]];
+    weld[order[i]] = same ? weld[order[i - 1]] : order[i];
+    num_welded += same ? 0 : 1;
+  }
+  return weld;
+}
+
+bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::size_t>>& faces) {
+  if (faces.empty()) return false;
+  std::vector<Kernel::Point_3> points;
+  points.reserve(mesh.vertices.size());
+  for (const Vec3& p : mesh.vertices) points.emplace_back(p.x(), p.y(), p.z());
+  std::vector<std::vector<std::size_t>> polygons = faces;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    // Splits non-manifold vertices and flips faces so that a halfedge mesh can hold the soup.
+    PMP::orient_polygon_soup(points, polygons);
+  }
+  CgalMesh cgal_mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
+  LINESURF_THROW_IF(!PMP::triangulate_faces(cgal_mesh), kDegenerate, kStage,
+                    "a face could not be triangulated for the self-intersection test");
+  return PMP::does_self_intersect(cgal_mesh);
+}
+
+MeshTopology Check(const PolygonMesh& mesh) {
+  const std::size_t num_vertices = mesh.vertices.size();
+  LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.front() != 0 ||
+                        mesh.face_offsets.back() != mesh.face_indices.size(),
+                    kInvalidInput, kStage, "face offsets do not cover the face indices");
+  for (std::size_t i = 0; i < mesh.face_indices.size(); ++i) {
+    LINESURF_THROW_IF(mesh.face_indices[i] >= num_vertices, kInvalidInput, kStage,
+                      "face index " << i << " refers to vertex " << mesh.face_indices[i]
+                                    << " of " << num_vertices);
+  }
+  MeshTopology topo;
+  topo.num_faces = mesh.NumFaces();
+  const std::vector<std::uint32_t> weld = WeldIdenticalVertices(mesh, topo.num_vertices);
+
+  // Welded faces; those with fewer than 3 distinct vertices or a repeated vertex are degenerate
+  // and take no part in the checks.
+  std::vector<std::vector<std::size_t>> faces;
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    std::vector<std::size_t> face;
+    for (std::uint32_t v : mesh.Face(f)) {
+      if (face.empty() || face.back() != weld[v]) face.push_back(weld[v]);
+    }
+    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+    std::vector<std::size_t> sorted = face;
+    std::sort(sorted.begin(), sorted.end());
+    if (face.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      ++topo.num_degenerate_faces;
+      continue;
+    }
+    faces.push_back(std::move(face));
+  }
+
+  // Area and signed volume over a fan triangulation (exact for planar convex faces; the volume
+  // is exact for any closed polygon mesh because the fan's inner edges cancel).
+  for (const auto& face : faces) {
+    const Vec3& a = mesh.vertices[face[0]];
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+      const Vec3& b = mesh.vertices[face[k]];
+      const Vec3& c = mesh.vertices[face[k + 1]];
+      topo.area += 0.5 * (b - a).cross(c - a).norm();
+      topo.signed_volume += a.dot(b.cross(c)) / 6.0;
+    }
+  }
+
+  // Directed edges (lo, hi, forward, face) sorted: groups are undirected edges.
+  struct HalfEdge {
+    std::size_t lo, hi;
+    bool forward;
+    std::size_t face;
+    auto Key() const { return std::tie(lo, hi, forward, face); }
+  };
+  std::vector<HalfEdge> edges;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto& face = faces[f];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const std::size_t a = face[k];
+      const std::size_t b = face[(k + 1) % face.size()];
+      edges.push_back({std::min(a, b), std::max(a, b), a < b, f});
+    }
+  }
+  std::sort(edges.begin(), edges.end(),
+            [](const HalfEdge& x, const HalfEdge& y) { return x.Key() < y.Key(); });
+  DisjointSets face_sets(faces.size());
+  bool consistent = true;
+  std::size_t group = 0;  // first half-edge of the current undirected edge
+  for (std::size_t i = 1; i <= edges.size() && !edges.empty(); ++i) {
+    if (i < edges.size() && edges[i].lo == edges[group].lo && edges[i].hi == edges[group].hi) {
+      face_sets.Union(edges[group].face, edges[i].face);
+      continue;
+    }
+    const std::size_t uses = i - group;
+    if (uses == 1) ++topo.num_boundary_edges;
+    if (uses > 2) ++topo.num_non_manifold_edges;
+    if (uses == 2 && edges[group].forward == edges[group + 1].forward) consistent = false;
+    group = i;
+  }
+  topo.num_components = face_sets.CountRoots(faces.size());
+
+  // Vertex fans: corners around a vertex are linked when they share an edge to a neighbour x.
+  struct Corner {
+    std::size_t vertex, neighbour, corner;
+  };
+  std::vector<Corner> links;
+  std::size_t num_corners = 0;
+  for (const auto& face : faces) {
+    for (std::size_t k = 0; k < face.size(); ++k, ++num_corners) {
+      const std::size_t prev = face[(k + face.size() - 1) % face.size()];
+      const std::size_t next = face[(k + 1) % face.size()];
+      links.push_back({face[k], prev, num_corners});
+      links.push_back({face[k], next, num_corners});
+    }
+  }
+  std::sort(links.begin(), links.end(), [](const Corner& x, const Corner& y) {
+    return std::tie(x.vertex, x.neighbour, x.corner) < std::tie(y.vertex, y.neighbour, y.corner);
+  });
+  DisjointSets corner_sets(num_corners);
+  for (std::size_t i = 0; i + 1 < links.size(); ++i) {
+    if (links[i].vertex == links[i + 1].vertex && links[i].neighbour == links[i + 1].neighbour) {
+      corner_sets.Union(links[i].corner, links[i + 1].corner);
+    }
+  }
+  for (std::size_t i = 0; i < links.size();) {
+    std::size_t j = i;
+    std::size_t fans = 0;
+    std::vector<std::size_t> roots;
+    while (j < links.size() && links[j].vertex == links[i].vertex) {
+      roots.push_back(corner_sets.Find(links[j].corner));
+      ++j;
+    }
+    std::sort(roots.begin(), roots.end());
+    fans = static_cast<std::size_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
+    if (fans > 1) ++topo.num_non_manifold_vertices;
+    i = j;
+  }
+
+  topo.closed = !faces.empty() && topo.num_boundary_edges == 0 && topo.num_non_manifold_edges == 0;
+  topo.two_manifold = topo.num_non_manifold_edges == 0 && topo.num_non_manifold_vertices == 0;
+  topo.oriented = consistent && topo.num_non_manifold_edges == 0;
+  topo.outward = topo.closed && topo.oriented && topo.signed_volume > 0.0;
+  topo.self_intersecting = SelfIntersects(mesh, faces);
+  return topo;
+}
+
+}  // namespace
+
+Expected<MeshTopology> CheckMeshTopology(const PolygonMesh& mesh) noexcept {
+  return CatchAll(kStage, [&] { return Check(mesh); });
+}
+
+}  // namespace linesurf
