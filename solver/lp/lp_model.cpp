@@ -24,7 +24,7 @@ void LpModel::AddRow(std::span<const std::uint32_t> columns, std::span<const dou
 }
 
 double LpModel::Evaluate(std::span<const double> x) const {
-  double value = 0.0;
+  double value = objective_offset;
   for (std::size_t j = 0; j < objective.size(); ++j) value += objective[j] * x[j];
   return value;
 }

@@ -13,6 +13,9 @@ namespace linesurf::solver {
 inline constexpr double kLpInfinity = std::numeric_limits<double>::infinity();
 
 struct LpModel {
+  /// Constant added to objective . x so that LP objective values equal the energy they model
+  /// (e.g. the terms of fixed cells folded out by BuildLp).
+  double objective_offset = 0.0;
   std::vector<double> objective;
   std::vector<double> col_lower;
   std::vector<double> col_upper;
@@ -32,7 +35,7 @@ struct LpModel {
   /// Adds the row lower <= sum values[i] * x[columns[i]] <= upper.
   void AddRow(std::span<const std::uint32_t> columns, std::span<const double> values, double lower,
               double upper);
-  /// Objective value of `x`.
+  /// Objective value of `x` (objective_offset included).
   [[nodiscard]] double Evaluate(std::span<const double> x) const;
   /// Largest violation of any row or bound by `x` (0 when feasible).
   [[nodiscard]] double MaxViolation(std::span<const double> x) const;

@@ -1,0 +1,136 @@
+#include "solver/lp/backends/clp/clp_backend.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <ClpEventHandler.hpp>
+#include <ClpSimplex.hpp>
+#include <ClpSolve.hpp>
+#include <CoinFinite.hpp>
+#include <CoinPackedMatrix.hpp>
+
+#include "engine/core/exception.h"
+
+namespace linesurf::solver {
+namespace {
+
+constexpr const char* kStage = "solve_labeling";
+
+// Stops Clp (status 5) when the host cancels or the wall-time limit passes. Copied by Clp into
+// the presolved model, so it only holds pointers to objects that outlive the solve.
+class StopHandler : public ClpEventHandler {
+ public:
+  StopHandler(const RunContext* ctx, std::chrono::steady_clock::time_point deadline,
+              bool* cancelled, bool* timed_out)
+      : ctx_(ctx), deadline_(deadline), cancelled_(cancelled), timed_out_(timed_out) {}
+
+  int event(Event which_event) override {
+    if (which_event != endOfIteration && which_event != endOfFactorization) return -1;
+    if (ctx_->ShouldStop()) {
+      *cancelled_ = true;
+      return 0;
+    }
+    if (std::chrono::steady_clock::now() > deadline_) {
+      *timed_out_ = true;
+      return 0;
+    }
+    return -1;
+  }
+  ClpEventHandler* clone() const override { return new StopHandler(*this); }
+
+ private:
+  const RunContext* ctx_;
+  std::chrono::steady_clock::time_point deadline_;
+  bool* cancelled_;
+  bool* timed_out_;
+};
+
+double ToCoin(double value) {
+  if (value == kLpInfinity) return COIN_DBL_MAX;
+  if (value == -kLpInfinity) return -COIN_DBL_MAX;
+  return value;
+}
+
+const char* ClpStatusName(int status) {
+  switch (status) {
+    case 0: return "optimal";
+    case 1: return "primal infeasible";
+    case 2: return "dual infeasible (unbounded)";
+    case 3: return "stopped on iterations or time";
+    case 4: return "stopped due to errors";
+    case 5: return "stopped by event";
+    default: return "unknown status";
+  }
+}
+
+}  // namespace
+
+LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
+                          const LabelingOptions& options, const RunContext& ctx) {
+  const int num_rows = static_cast<int>(lp.NumRows());
+  const int num_cols = static_cast<int>(lp.NumColumns());
+  LpSolution solution;
+  if (num_cols == 0) {
+    solution.objective = lp.objective_offset;
+    solution.status = "optimal";
+    return solution;
+  }
+  std::vector<int> indices(lp.row_columns.begin(), lp.row_columns.end());
+  std::vector<CoinBigIndex> starts(lp.row_offsets.begin(), lp.row_offsets.end());
+  std::vector<int> lengths(static_cast<std::size_t>(num_rows));
+  for (int r = 0; r < num_rows; ++r) {
+    lengths[static_cast<std::size_t>(r)] =
+        static_cast<int>(lp.row_offsets[r + 1] - lp.row_offsets[r]);
+  }
+  const CoinPackedMatrix matrix(false, num_cols, num_rows,
+                                static_cast<CoinBigIndex>(lp.NumNonzeros()), lp.row_values.data(),
+                                indices.data(), starts.data(), lengths.data());
+  std::vector<double> col_lower(lp.col_lower), col_upper(lp.col_upper);
+  std::vector<double> row_lower(lp.row_lower), row_upper(lp.row_upper);
+  for (auto* v : {&col_lower, &col_upper, &row_lower, &row_upper}) {
+    for (double& x : *v) x = ToCoin(x);
+  }
+
+  ClpSimplex model;
+  model.setLogLevel(0);
+  model.messageHandler()->setLogLevel(0);
+  model.loadProblem(matrix, col_lower.data(), col_upper.data(), lp.objective.data(),
+                    row_lower.data(), row_upper.data());
+  model.setPrimalTolerance(options.clp_tolerance);
+  model.setDualTolerance(options.clp_tolerance);
+  model.setOptimizationDirection(1.0);
+
+  bool cancelled = false;
+  bool timed_out = false;
+  const auto deadline =
+      options.time_limit_seconds > 0.0
+          ? std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(options.time_limit_seconds))
+          : std::chrono::steady_clock::time_point::max();
+  StopHandler handler(&ctx, deadline, &cancelled, &timed_out);
+  model.passInEventHandler(&handler);
+
+  ClpSolve solve_options;
+  solve_options.setSolveType(algorithm == ClpAlgorithm::kBarrier ? ClpSolve::useBarrier
+                                                                  : ClpSolve::useDual);
+  solve_options.setPresolveType(ClpSolve::presolveOn);
+  model.initialSolve(solve_options);
+
+  LINESURF_THROW_IF(cancelled, kCancelled, kStage, "Clp solve cancelled by the host");
+  LINESURF_THROW_IF(timed_out, kSolverFailed, kStage,
+                    "Clp stopped at the time limit of " << options.time_limit_seconds << " s");
+  LINESURF_THROW_IF(!model.isProvenOptimal(), kSolverFailed, kStage,
+                    "Clp failed: status " << model.status() << " (" << ClpStatusName(model.status())
+                                          << "), secondary status " << model.secondaryStatus());
+  const double* values = model.primalColumnSolution();
+  solution.columns.assign(values, values + num_cols);
+  solution.objective = lp.Evaluate(solution.columns);
+  solution.status = "optimal";
+  solution.iterations = model.numberIterations();
+  return solution;
+}
+
+}  // namespace linesurf::solver

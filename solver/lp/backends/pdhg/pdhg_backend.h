@@ -1,0 +1,21 @@
+#pragma once
+// First-order primal-dual LP solver (PDHG in the style of PDLP: Ruiz + Pock-Chambolle diagonal
+// preconditioning, adaptive restarts to the average iterate, primal weight updates).
+// Handles any LpModel (rows l <= A x <= u, bounds possibly infinite).
+// Parallel SpMV over fixed row/column chunks with oneTBB; every output entry is a serial sum and
+// every reduction sums fixed-chunk partials in order, so results do not depend on thread count.
+
+#include "engine/core/run_context.h"
+#include "solver/lp/lp_backend.h"
+#include "solver/lp/lp_model.h"
+#include "solver/lp/lp_solution.h"
+
+namespace linesurf::solver {
+
+/// Stops when relative primal residual, dual residual and duality gap are all below
+/// options.pdhg_tolerance; throws kSolverFailed at options.pdhg_max_iterations or the time limit,
+/// kCancelled when ctx.ShouldStop() (polled every restart-check period).
+[[nodiscard]] LpSolution SolveLpWithPdhg(const LpModel& lp, const LabelingOptions& options,
+                                         const RunContext& ctx);
+
+}  // namespace linesurf::solver

@@ -1,0 +1,93 @@
+#pragma once
+/// @file lp_backend.h
+/// @brief SolveLabeling: minimise an EnergyInput over 0/1 labels through its LP relaxation.
+///
+/// Backends (LabelingOptions::backend):
+///  - "clp":     COIN-OR Clp, dual simplex with presolve on the exact LP relaxation (build_lp.h).
+///               Deterministic. The reference.
+///  - "maxflow": Boykov-Kolmogorov max-flow (libmaxflow). Exact (an optimal integral labelling,
+///               which is also an optimum of the LP) when, after fixed cells are substituted, no
+///               structural or parity group is left; otherwise refused with kInvalidOptions.
+///  - "pdhg":    first-order primal-dual LP method (PDLP-style: diagonal preconditioning,
+///               restarts to the average, adaptive primal weight); SpMV in fixed chunks with oneTBB
+///               so the result is identical for any thread count. Approximate optimum (relative
+///               tolerance pdhg_tolerance), fast on large complexes.
+///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
+///               else "pdhg" (see docs/design/lp_backend.md for the measurements).
+///
+/// Rounding: label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
+/// Ties (|x_c - 0.5| <= kTieTolerance) are decided one by one in increasing CellId order: each
+/// takes the label of lower energy given the labels decided so far (undecided ties count as
+/// empty); on equal energy the cell is empty. Fixed cells keep their label.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/core/run_context.h"
+#include "linesurf/error.h"
+#include "solver/energy/energy_input.h"
+
+namespace linesurf::solver {
+
+/// Half-width of the band around 0.5 in which a relaxed value counts as a tie.
+inline constexpr double kTieTolerance = 1e-7;
+
+struct LabelingOptions {
+  /// "clp", "maxflow", "pdhg" or "auto" (default: picks per model size, see above).
+  std::string backend = "auto";
+  /// Primal/dual feasibility tolerance of the simplex (Clp's primal and dual tolerances); range
+  /// (0, 1e-2]. Clp's default.
+  double clp_tolerance = 1e-7;
+  /// Relative tolerance of pdhg on primal residual, dual residual and duality gap; range
+  /// (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our tests (docs/solver.md).
+  double pdhg_tolerance = 1e-4;
+  /// Iteration cap of pdhg; >= 1. Reaching it is a failure (kSolverFailed).
+  std::int64_t pdhg_max_iterations = 200000;
+  /// "auto" uses clp up to this many LP columns and pdhg beyond; >= 0.
+  std::size_t auto_clp_max_columns = 200000;
+  /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
+  double time_limit_seconds = 0.0;
+
+  /// Names the first offending field.
+  [[nodiscard]] Status Validate() const;
+};
+
+struct LabelingResult {
+  /// 0 (empty) or 1 (full) per cell, fixed cells included; index = CellId::index().
+  std::vector<std::uint8_t> labels;
+  /// Relaxed LP value per cell in [0,1] (fixed cells at their label).
+  std::vector<double> relaxed;
+  /// EnergyInput::Evaluate(relaxed): the LP objective (constant of fixed cells included) at the
+  /// relaxed cell values with optimal slacks. For the exact backends (clp, maxflow) the LP
+  /// optimum, a lower bound on the integral optimum; for pdhg within its tolerance of it.
+  double relaxed_objective = 0.0;
+  /// EnergyInput::Evaluate(labels).
+  double labels_objective = 0.0;
+  /// "optimal", or the backend's own word for a successful stop.
+  std::string status;
+  /// Backend that actually ran ("auto" resolved).
+  std::string backend;
+  std::int64_t iterations = 0;
+  double seconds = 0.0;
+  /// Size of the LP after fixed cells were substituted (what "clp" and "pdhg" solve; for
+  /// "maxflow" the LP it would have been).
+  std::size_t lp_columns = 0;
+  std::size_t lp_rows = 0;
+  std::size_t lp_nonzeros = 0;
+  /// Free cells whose relaxed value was not integral (|x - round(x)| > kTieTolerance).
+  std::size_t fractional_cells = 0;
+  /// Ties broken by the rule above.
+  std::size_t tie_cells = 0;
+};
+
+/// Minimises `energy` over 0/1 labels through its LP relaxation (see the file comment).
+/// @return kInvalidOptions (bad options, or maxflow on a higher-order energy), kInvalidInput
+/// (energy fails Validate()), kSolverFailed (infeasible, unbounded, iteration or time limit; the
+/// status is in the message), kCancelled (ctx.ShouldStop()).
+/// Deterministic: same energy and options give the same result for any ctx.num_threads.
+[[nodiscard]] Expected<LabelingResult> SolveLabeling(const EnergyInput& energy,
+                                                     const LabelingOptions& options,
+                                                     const RunContext& ctx) noexcept;
+
+}  // namespace linesurf::solver

@@ -1,0 +1,223 @@
+#include "solver/lp/lp_backend.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "solver/testing/random_energy.h"
+
+namespace linesurf::solver {
+namespace {
+
+constexpr double kObjectiveTolerance = 1e-6;
+
+LabelingResult MustSolve(const EnergyInput& e, const std::string& backend, int threads = 1) {
+  LabelingOptions options;
+  options.backend = backend;
+  RunContext ctx;
+  ctx.num_threads = threads;
+  auto result = SolveLabeling(e, options, ctx);
+  EXPECT_TRUE(result) << (result ? "" : result.error().ToString());
+  if (!result) return {};
+  return std::move(result).value();
+}
+
+// Exhaustive minimum over 0/1 labellings (fixed cells held).
+double BruteForceMinimum(const EnergyInput& e) {
+  std::vector<std::size_t> free;
+  for (std::size_t c = 0; c < e.NumCells(); ++c) {
+    if (e.fixed[CellId(c)] == CellFix::kFree) free.push_back(c);
+  }
+  EXPECT_LE(free.size(), 16u);
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<std::uint8_t> labels(e.NumCells());
+  for (std::uint32_t mask = 0; mask < (1u << free.size()); ++mask) {
+    for (std::size_t c = 0; c < e.NumCells(); ++c) {
+      labels[c] = e.fixed[CellId(c)] == CellFix::kFull ? 1 : 0;
+    }
+    for (std::size_t j = 0; j < free.size(); ++j) labels[free[j]] = (mask >> j) & 1u;
+    best = std::min(best, e.Evaluate(std::span<const std::uint8_t>(labels)));
+  }
+  return best;
+}
+
+// A chain 0-1-...-5: strong evidence for full at cell 1 and 4, pairwise terms between
+// neighbours, the ends fixed empty. Min cut: full on 1..4 costs 2 (two cut pairs) and less than
+// leaving the evidence empty (3 + 3).
+EnergyInput Chain() {
+  EnergyInput e;
+  e.AddCell(0.0, 0.0, CellFix::kEmpty);
+  e.AddCell(3.0, 0.0);
+  e.AddCell(0.0, 0.2);
+  e.AddCell(0.0, 0.2);
+  e.AddCell(3.0, 0.0);
+  e.AddCell(0.0, 0.0, CellFix::kEmpty);
+  for (std::uint32_t i = 0; i + 1 < 6; ++i) e.AddPair(CellId(i), CellId(i + 1), 1.0);
+  return e;
+}
+
+class EveryBackend : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryBackend, ChainGivesTheMinCut) {
+  const LabelingResult r = MustSolve(Chain(), GetParam());
+  EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0}));
+  EXPECT_NEAR(r.labels_objective, 2.4, 1e-9);
+  EXPECT_NEAR(r.relaxed_objective, 2.4, 1e-3);
+}
+
+TEST_P(EveryBackend, FixedCellsAreRespected) {
+  EnergyInput e = Chain();
+  e.fixed[CellId(2u)] = CellFix::kEmpty;  // evidence says full, boundary says empty
+  e.fixed[CellId(0u)] = CellFix::kFull;
+  const LabelingResult r = MustSolve(e, GetParam());
+  EXPECT_EQ(r.labels[0], 1);
+  EXPECT_EQ(r.labels[2], 0);
+  EXPECT_EQ(r.labels[5], 0);
+  EXPECT_NEAR(r.labels_objective, BruteForceMinimum(e), 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solver, EveryBackend, ::testing::Values("clp", "maxflow", "pdhg", "auto"));
+
+class LpBackends : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LpBackends, StructuralGroupForcesOneCellFull) {
+  // Three cells, a slight cost for being full, one structural group over all of them: exactly
+  // one must be full; the cheapest is cell 1.
+  EnergyInput e;
+  e.AddCell(0.0, 0.3);
+  e.AddCell(0.0, 0.1);
+  e.AddCell(0.0, 0.2);
+  const CellId group[] = {CellId(0u), CellId(1u), CellId(2u)};
+  e.AddStructuralGroup(group, 1.0);
+  const LabelingResult r = MustSolve(e, GetParam());
+  EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 0}));
+  EXPECT_NEAR(r.labels_objective, 0.1, 1e-9);
+}
+
+TEST_P(LpBackends, ParityTermPrefersAFlatSurface) {
+  // Four cells around an edge, nu = (+,-,+,-), cells 0 and 1 fixed full; cell 2 has weak
+  // evidence for full (0.4), cell 3 a viewpoint prior (0.5). Full {0,1,2} is a crease (parity
+  // 1), full {0,1} is flat (parity 0, pays 0.4), all full is flat (pays 0.5): with an edge
+  // weight above the evidence the flat surface {0,1} wins.
+  EnergyInput e;
+  e.AddCell(0.0, 0.0, CellFix::kFull);
+  e.AddCell(0.0, 0.0, CellFix::kFull);
+  e.AddCell(0.4, 0.0);
+  e.AddCell(0.0, 0.5);
+  const CellId cells[] = {CellId(0u), CellId(1u), CellId(2u), CellId(3u)};
+  const std::int8_t nu[] = {1, -1, 1, -1};
+  e.AddParityGroup(cells, nu, 1.0);
+  const LabelingResult flat = MustSolve(e, GetParam());
+  EXPECT_EQ(flat.labels, (std::vector<std::uint8_t>{1, 1, 0, 0}));
+  EXPECT_NEAR(flat.labels_objective, 0.4, 1e-9);
+  e.parity_weights[0] = 0.1;  // now the evidence wins: crease costs 0.1 < 0.4
+  const LabelingResult crease = MustSolve(e, GetParam());
+  EXPECT_EQ(crease.labels, (std::vector<std::uint8_t>{1, 1, 1, 0}));
+}
+
+TEST_P(LpBackends, MatchClpOnRandomEnergies) {
+  int integral = 0;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 14;
+    spec.num_pairs = 20;
+    spec.num_structural = 5;
+    spec.num_parity = 5;
+    spec.fixed_fraction = 0.15;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const double best = BruteForceMinimum(e);
+    const LabelingResult clp = MustSolve(e, "clp");
+    const LabelingResult other = MustSolve(e, GetParam());
+    // The relaxation bounds the integral optimum from below.
+    EXPECT_LE(clp.relaxed_objective, best + kObjectiveTolerance);
+    EXPECT_NEAR(other.relaxed_objective, clp.relaxed_objective, 1e-3 * (1.0 + clp.relaxed_objective))
+        << "seed " << seed;
+    if (clp.fractional_cells == 0) {
+      ++integral;
+      // An integral LP optimum is an integral optimum; labels must agree where it is unique.
+      EXPECT_NEAR(clp.labels_objective, best, kObjectiveTolerance) << "seed " << seed;
+      EXPECT_NEAR(other.labels_objective, clp.labels_objective, 1e-6) << "seed " << seed;
+    }
+  }
+  EXPECT_GT(integral, 5);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solver, LpBackends, ::testing::Values("clp", "pdhg"));
+
+TEST(SolveLabeling, MaxflowMatchesClpOnPairwiseEnergies) {
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 40;
+    spec.num_pairs = 80;
+    spec.num_structural = 0;
+    spec.num_parity = 0;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const LabelingResult clp = MustSolve(e, "clp");
+    const LabelingResult flow = MustSolve(e, "maxflow");
+    EXPECT_NEAR(flow.labels_objective, clp.relaxed_objective, kObjectiveTolerance) << seed;
+    EXPECT_NEAR(clp.labels_objective, clp.relaxed_objective, kObjectiveTolerance) << seed;
+  }
+}
+
+TEST(SolveLabeling, MaxflowRefusesHigherOrderTerms) {
+  EnergyInput e;
+  e.AddCell(0.0, 0.3);
+  e.AddCell(0.0, 0.1);
+  const CellId group[] = {CellId(0u), CellId(1u)};
+  e.AddStructuralGroup(group, 1.0);
+  LabelingOptions options;
+  options.backend = "maxflow";
+  const auto result = SolveLabeling(e, options, RunContext{});
+  ASSERT_FALSE(result);
+  EXPECT_EQ(result.error().code, ErrorCode::kInvalidOptions);
+  // With the group's cell fixed full the group vanishes and max-flow is exact again.
+  e.fixed[CellId(0u)] = CellFix::kFull;
+  EXPECT_TRUE(SolveLabeling(e, options, RunContext{}));
+}
+
+TEST(SolveLabeling, AutoPicksMaxflowOnlyWhenExact) {
+  EXPECT_EQ(MustSolve(Chain(), "auto").backend, "maxflow");
+  testing::RandomEnergySpec spec;
+  EXPECT_EQ(MustSolve(testing::RandomEnergy(spec), "auto").backend, "clp");
+}
+
+TEST(SolveLabeling, RejectsBadOptionsAndInput) {
+  LabelingOptions options;
+  options.backend = "mosek";
+  EXPECT_EQ(SolveLabeling(Chain(), options, RunContext{}).error().code, ErrorCode::kInvalidOptions);
+  options = {};
+  options.pdhg_tolerance = 0.0;
+  EXPECT_EQ(SolveLabeling(Chain(), options, RunContext{}).error().code, ErrorCode::kInvalidOptions);
+  EnergyInput bad = Chain();
+  bad.AddPair(CellId(0u), CellId(99u), 1.0);
+  EXPECT_EQ(SolveLabeling(bad, LabelingOptions{}, RunContext{}).error().code,
+            ErrorCode::kInvalidInput);
+}
+
+TEST(SolveLabeling, CancelledRunReturnsCancelled) {
+  RunContext ctx;
+  ctx.is_cancelled = [] { return true; };
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 8;
+  for (const char* backend : {"clp", "pdhg"}) {
+    LabelingOptions options;
+    options.backend = backend;
+    const auto result = SolveLabeling(testing::GridEnergy(spec), options, ctx);
+    ASSERT_FALSE(result) << backend;
+    EXPECT_EQ(result.error().code, ErrorCode::kCancelled) << backend;
+  }
+}
+
+TEST(SolveLabeling, EmptyEnergySolves) {
+  const LabelingResult r = MustSolve(EnergyInput{}, "clp");
+  EXPECT_TRUE(r.labels.empty());
+  EXPECT_EQ(r.lp_columns, 0u);
+}
+
+}  // namespace
+}  // namespace linesurf::solver
