@@ -1,0 +1,186 @@
+// The only CGAL translation unit of the arrangement: interval filters (CGAL::Interval_nt) with
+// exact fallbacks (CGAL::Mpzf, exact for sums and products of doubles).
+
+#include "partition/arrangement/exact_predicates.h"
+
+#include <cmath>
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
+#include <CGAL/determinant.h>
+
+namespace linesurf::partition {
+namespace {
+
+using Interval = CGAL::Interval_nt<true>;  // protected: sets the rounding mode per operation
+using Exact = CGAL::Mpzf;
+
+/// Relative width above which a vertex box is recomputed exactly (tighter boxes mean fewer exact
+/// sign fallbacks later).
+constexpr double kVertexBoundsRelativeWidth = 1e-10;
+
+int SignOf(const Exact& x) { return static_cast<int>(CGAL::sign(x)); }
+
+/// -1/0/+1 when the interval decides the sign, 2 when uncertain.
+int SignOf(const Interval& x) {
+  if (x.inf() > 0) return 1;
+  if (x.sup() < 0) return -1;
+  if (x.inf() == 0 && x.sup() == 0) return 0;
+  return 2;
+}
+
+void CountFallback(ExactCounter* counter) {
+  if (counter != nullptr) counter->exact_fallbacks.fetch_add(1, std::memory_order_relaxed);
+}
+
+template <typename T>
+T Det3(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return CGAL::determinant(T(a[0]), T(a[1]), T(a[2]), T(b[0]), T(b[1]), T(b[2]), T(c[0]), T(c[1]),
+                           T(c[2]));
+}
+
+template <typename T>
+T Det4(const Eigen::Vector4d& a, const Eigen::Vector4d& b, const Eigen::Vector4d& c,
+       const Eigen::Vector4d& d) {
+  return CGAL::determinant(T(a[0]), T(a[1]), T(a[2]), T(a[3]), T(b[0]), T(b[1]), T(b[2]), T(b[3]),
+                           T(c[0]), T(c[1]), T(c[2]), T(c[3]), T(d[0]), T(d[1]), T(d[2]), T(d[3]));
+}
+
+template <typename T>
+T Eval(const Eigen::Vector4d& plane, const Vec3& p) {
+  return T(plane[0]) * T(p[0]) + T(plane[1]) * T(p[1]) + T(plane[2]) * T(p[2]) + T(plane[3]);
+}
+
+template <typename T>
+T Dot(const Vec3& n, const Vec3& v) {
+  return T(n[0]) * T(v[0]) + T(n[1]) * T(v[1]) + T(n[2]) * T(v[2]);
+}
+
+/// The three numerators and the denominator of Cramer's rule for N x = -d.
+template <typename T>
+void Cramer(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const Eigen::Vector4d& k,
+            T num[3], T& den) {
+  const Vec3 ni = i.head<3>(), nj = j.head<3>(), nk = k.head<3>();
+  den = Det3<T>(ni, nj, nk);
+  for (int c = 0; c < 3; ++c) {
+    Vec3 ri = ni, rj = nj, rk = nk;
+    ri[c] = -i[3];
+    rj[c] = -j[3];
+    rk[c] = -k[3];
+    num[c] = Det3<T>(ri, rj, rk);
+  }
+}
+
+}  // namespace
+
+int ExactSignAtPoint(const Eigen::Vector4d& plane, const Vec3& p, ExactCounter* counter) {
+  const int s = SignOf(Eval<Interval>(plane, p));
+  if (s != 2) return s;
+  CountFallback(counter);
+  return SignOf(Eval<Exact>(plane, p));
+}
+
+int ExactSignDot(const Vec3& n, const Vec3& v, ExactCounter* counter) {
+  const int s = SignOf(Dot<Interval>(n, v));
+  if (s != 2) return s;
+  CountFallback(counter);
+  return SignOf(Dot<Exact>(n, v));
+}
+
+int ExactSignDet3(const Vec3& n1, const Vec3& n2, const Vec3& n3, ExactCounter* counter) {
+  const int s = SignOf(Det3<Interval>(n1, n2, n3));
+  if (s != 2) return s;
+  CountFallback(counter);
+  return SignOf(Det3<Exact>(n1, n2, n3));
+}
+
+int ExactSignAtVertex(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const Eigen::Vector4d& k,
+                      const Eigen::Vector4d& l, ExactCounter* counter) {
+  int s4 = SignOf(Det4<Interval>(i, j, k, l));
+  int s3 = SignOf(Det3<Interval>(i.head<3>(), j.head<3>(), k.head<3>()));
+  if (s4 == 2 || s3 == 2) {
+    CountFallback(counter);
+    if (s4 == 2) s4 = SignOf(Det4<Exact>(i, j, k, l));
+    if (s3 == 2) s3 = SignOf(Det3<Exact>(i.head<3>(), j.head<3>(), k.head<3>()));
+  }
+  return s4 * s3;
+}
+
+int ExactProportionality(const Eigen::Vector4d& p, const Eigen::Vector4d& q, ExactCounter* counter) {
+  // Proportional iff every 2x2 minor p_a q_b - p_b q_a vanishes.
+  bool uncertain = false;
+  for (int a = 0; a < 4; ++a) {
+    for (int b = a + 1; b < 4; ++b) {
+      const int s = SignOf(Interval(p[a]) * Interval(q[b]) - Interval(p[b]) * Interval(q[a]));
+      if (s == 1 || s == -1) return 0;
+      if (s == 2) uncertain = true;
+    }
+  }
+  if (uncertain) {
+    CountFallback(counter);
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        if (SignOf(Exact(p[a]) * Exact(q[b]) - Exact(p[b]) * Exact(q[a])) != 0) return 0;
+      }
+    }
+  }
+  // Proportional: the sign of the factor is the sign of p.q over the (nonzero) normals.
+  const double dot = p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+  if (dot != 0) return dot > 0 ? 1 : -1;
+  for (int a = 0; a < 4; ++a) {
+    if (p[a] != 0 && q[a] != 0) return (p[a] > 0) == (q[a] > 0) ? 1 : -1;
+  }
+  return 0;
+}
+
+bool ExactParallelNormals(const Eigen::Vector4d& p, const Eigen::Vector4d& q, ExactCounter* counter) {
+  const Vec3 n = p.head<3>(), m = q.head<3>();
+  bool uncertain = false;
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3;
+    const int s = SignOf(Interval(n[a]) * Interval(m[b]) - Interval(n[b]) * Interval(m[a]));
+    if (s == 1 || s == -1) return false;
+    if (s == 2) uncertain = true;
+  }
+  if (uncertain) {
+    CountFallback(counter);
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      if (SignOf(Exact(n[a]) * Exact(m[b]) - Exact(n[b]) * Exact(m[a])) != 0) return false;
+    }
+  }
+  return true;
+}
+
+VertexBounds ComputeVertexBounds(const Eigen::Vector4d& i, const Eigen::Vector4d& j,
+                                 const Eigen::Vector4d& k, ExactCounter* counter) {
+  Interval num[3];
+  Interval den;
+  Cramer<Interval>(i, j, k, num, den);
+  Interval x[3];
+  bool tight = SignOf(den) == 1 || SignOf(den) == -1;
+  if (tight) {
+    for (int c = 0; c < 3; ++c) {
+      x[c] = num[c] / den;
+      const double width = x[c].sup() - x[c].inf();
+      if (!(width <= kVertexBoundsRelativeWidth * (1.0 + std::abs(x[c].inf())))) tight = false;
+    }
+  }
+  if (!tight) {
+    CountFallback(counter);
+    Exact enum_[3];
+    Exact eden;
+    Cramer<Exact>(i, j, k, enum_, eden);
+    const Interval iden(CGAL::to_interval(eden));
+    for (int c = 0; c < 3; ++c) x[c] = Interval(CGAL::to_interval(enum_[c])) / iden;
+  }
+  VertexBounds bounds;
+  for (int c = 0; c < 3; ++c) {
+    bounds.lo[c] = x[c].inf();
+    bounds.hi[c] = x[c].sup();
+    bounds.approx[c] = 0.5 * (x[c].inf() + x[c].sup());
+  }
+  return bounds;
+}
+
+}  // namespace linesurf::partition
