@@ -1,0 +1,328 @@
+#include "tools/gen/synthesize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "engine/core/exception.h"
+#include "tools/gen/family_layout.h"
+#include "tools/gen/occluder.h"
+
+namespace linesurf::synth {
+namespace {
+
+const char* const kStage = "synthesize";
+/// A viewpoint sees a line only if it is in front of one of the line's faces by at least this
+/// sine of the viewing angle (grazing views are not reconstructed by real pipelines).
+constexpr double kMinViewSine = 0.05;
+/// Sample points along a piece that must all be visible (ends inset so they stay on the edge).
+constexpr double kSampleParams[] = {0.02, 0.5, 0.98};
+/// At most this many candidate viewpoints (nearest first) are ray-tested per piece.
+constexpr std::size_t kMaxTestedViewpoints = 64;
+/// Grain of the parallel visibility loop (pieces per task); results do not depend on it.
+constexpr std::size_t kVisibilityGrain = 64;
+/// Bounds of the spec fields.
+constexpr int kMaxCityBuildings = 100000;
+constexpr int kDefaultCityBuildings = 16;
+constexpr double kMaxNoise = 10.0;
+constexpr double kMaxOutlierFraction = 0.9;
+constexpr int kMaxOutlierCount = 1000000;
+constexpr int kMaxPieces = 16;
+constexpr double kMaxTrim = 0.4;
+constexpr int kMaxViews = 64;
+constexpr double kMaxOffset = 1e7;
+
+/// A piece of a true line after cutting and trimming.
+struct Piece {
+  Segment3 segment;
+  std::uint32_t line = 0;
+};
+
+/// Viewpoints bucketed in an xy grid of cell = max distance (or one bucket when unbounded).
+class ViewpointIndex {
+ public:
+  ViewpointIndex(const std::vector<Vec3>& viewpoints, double max_distance)
+      : viewpoints_(viewpoints), max_distance_(max_distance) {
+    if (!std::isfinite(max_distance_)) return;
+    for (std::uint32_t i = 0; i < viewpoints.size(); ++i) {
+      buckets_[CellOf(viewpoints[i])].push_back(i);
+    }
+  }
+  /// Viewpoints within the max distance of `p`, nearest first (ties by id).
+  void Near(const Vec3& p, std::vector<std::pair<double, std::uint32_t>>& out) const {
+    out.clear();
+    const double max2 = max_distance_ * max_distance_;
+    const auto consider = [&](std::uint32_t i) {
+      const double d2 = (viewpoints_[i] - p).squaredNorm();
+      if (d2 <= max2) out.emplace_back(d2, i);
+    };
+    if (!std::isfinite(max_distance_)) {
+      for (std::uint32_t i = 0; i < viewpoints_.size(); ++i) consider(i);
+    } else {
+      const auto [cx, cy] = CellOf(p);
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+          const auto it = buckets_.find({cx + dx, cy + dy});
+          if (it == buckets_.end()) continue;
+          for (std::uint32_t i : it->second) consider(i);
+        }
+      }
+    }
+    std::sort(out.begin(), out.end());
+  }
+
+ private:
+  [[nodiscard]] std::pair<std::int64_t, std::int64_t> CellOf(const Vec3& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / max_distance_)),
+            static_cast<std::int64_t>(std::floor(p.y() / max_distance_))};
+  }
+  const std::vector<Vec3>& viewpoints_;
+  double max_distance_;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>> buckets_;
+};
+
+Vec3 UniformInBall(Rng& rng, double radius) {
+  while (true) {
+    const Vec3 p(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    if (p.squaredNorm() <= 1.0) return radius * p;
+  }
+}
+
+Vec3 UniformDirection(Rng& rng) {
+  while (true) {
+    const Vec3 p(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    const double n2 = p.squaredNorm();
+    if (n2 <= 1.0 && n2 > 1e-6) return p / std::sqrt(n2);
+  }
+}
+
+FamilyLayout MakeLayout(const SynthSpec& spec) {
+  if (spec.family == "cube") return CubeLayout(spec);
+  if (spec.family == "house") return HouseLayout(spec);
+  if (spec.family == "room") return RoomLayout(spec);
+  return CityLayout(spec);
+}
+
+/// Cuts line `index` into 1..max_pieces pieces and trims each end.
+void CutLine(const TrueLine& line, std::uint32_t index, const SynthSpec& spec, int max_pieces,
+             double max_trim, double min_piece, std::vector<Piece>& out) {
+  Rng rng = StreamRng(spec.seed, SynthStream::kCut, index);
+  const double length = line.segment.Length();
+  int pieces = 1 + static_cast<int>(rng.Below(static_cast<std::uint64_t>(max_pieces)));
+  pieces = std::max(1, std::min(pieces, static_cast<int>(std::floor(length / min_piece))));
+  std::vector<double> cuts = {0.0, 1.0};
+  for (int i = 1; i < pieces; ++i) cuts.push_back(rng.Uniform());
+  std::sort(cuts.begin(), cuts.end());
+  const Vec3 d = line.segment.p2 - line.segment.p1;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double span = cuts[i + 1] - cuts[i];
+    const double t0 = cuts[i] + span * rng.Uniform(0.0, max_trim);
+    const double t1 = cuts[i + 1] - span * rng.Uniform(0.0, max_trim);
+    if ((t1 - t0) * length <= 0.0) continue;
+    out.push_back(Piece{Segment3{line.segment.p1 + t0 * d, line.segment.p1 + t1 * d}, index});
+  }
+}
+
+SyntheticScene Build(const SynthSpec& spec) {
+  FamilyLayout layout = MakeLayout(spec);
+  const int max_pieces = spec.max_pieces.value_or(layout.default_max_pieces);
+  const double max_trim = spec.max_trim.value_or(layout.default_max_trim);
+
+  // True lines: sharp edges (structural) first, then texture lines.
+  std::vector<TrueLine> lines;
+  for (const SharpEdge& e : layout.solid.SharpEdges()) {
+    TrueLine line;
+    line.segment = e.segment;
+    line.kind = SegmentKind::kStructural;
+    line.planes.Add(e.planes[0]);
+    line.planes.Add(e.planes[1]);
+    line.outward = e.outward;
+    lines.push_back(line);
+  }
+  lines.insert(lines.end(), layout.texture_lines.begin(), layout.texture_lines.end());
+
+  std::vector<Piece> pieces;
+  for (std::uint32_t i = 0; i < lines.size(); ++i) {
+    CutLine(lines[i], i, spec, max_pieces, max_trim, layout.min_piece_length, pieces);
+  }
+
+  // Occlusion-correct views: nearest viewpoints that are in front of the line's faces and see
+  // every sample point of the piece.
+  const Occluder occluder(layout.solid);
+  const ViewpointIndex index(layout.viewpoints, layout.max_view_distance);
+  std::vector<std::vector<std::uint32_t>> views(pieces.size());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, pieces.size(), kVisibilityGrain),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        std::vector<std::pair<double, std::uint32_t>> near;
+        for (std::size_t pi = range.begin(); pi != range.end(); ++pi) {
+          const Piece& piece = pieces[pi];
+          const TrueLine& line = lines[piece.line];
+          const Vec3 mid = piece.segment.Midpoint();
+          index.Near(mid, near);
+          std::size_t tested = 0;
+          for (const auto& [d2, vi] : near) {
+            if (views[pi].size() >= static_cast<std::size_t>(spec.max_views)) break;
+            const Vec3& eye = layout.viewpoints[vi];
+            const Vec3 to_eye = eye - mid;
+            bool in_front = false;
+            for (std::uint8_t k = 0; k < line.planes.count; ++k) {
+              in_front = in_front || line.outward[k].dot(to_eye) > kMinViewSine * to_eye.norm();
+            }
+            if (!in_front) continue;
+            if (++tested > kMaxTestedViewpoints) break;
+            bool clear = true;
+            for (double s : kSampleParams) {
+              const Vec3 target = piece.segment.p1 + s * (piece.segment.p2 - piece.segment.p1);
+              if (!occluder.IsClear(eye, target)) {
+                clear = false;
+                break;
+              }
+            }
+            if (clear) views[pi].push_back(vi);
+          }
+          std::sort(views[pi].begin(), views[pi].end());
+        }
+      });
+
+  SyntheticScene out;
+  out.spec = spec;
+  out.interior = layout.interior;
+  out.ground_truth_volume = layout.volume;
+  Scene& scene = out.scene;
+  for (const Vec3& v : layout.viewpoints) scene.viewpoints.push_back(v);
+  scene.planes = layout.solid.planes();
+  std::vector<ViewpointId> row;
+  for (std::size_t pi = 0; pi < pieces.size(); ++pi) {
+    if (views[pi].empty()) {
+      ++out.num_hidden_dropped;
+      continue;
+    }
+    Rng rng = StreamRng(spec.seed, SynthStream::kNoise, pi);
+    Segment3 s = pieces[pi].segment;
+    if (spec.noise_sigma > 0.0) {
+      for (Vec3* p : {&s.p1, &s.p2}) {
+        if (spec.noise_model == NoiseModel::kGaussian) {
+          *p += spec.noise_sigma * Vec3(rng.Normal(), rng.Normal(), rng.Normal());
+        } else {
+          *p += UniformInBall(rng, spec.noise_sigma);
+        }
+      }
+    }
+    scene.segments.push_back(s);
+    row.clear();
+    for (std::uint32_t vi : views[pi]) row.push_back(ViewpointId(vi));
+    scene.observations.AddRow(row);
+    const TrueLine& line = lines[pieces[pi].line];
+    scene.memberships.push_back(line.planes);
+    out.kinds.push_back(line.kind);
+  }
+
+  // Outliers, each seen by its nearest viewpoints (no occlusion test: they are not geometry).
+  const std::size_t inliers = scene.segments.size();
+  const std::size_t num_outliers =
+      spec.outlier_count
+          ? static_cast<std::size_t>(*spec.outlier_count)
+          : static_cast<std::size_t>(std::llround(spec.outlier_fraction /
+                                                  (1.0 - spec.outlier_fraction) *
+                                                  static_cast<double>(inliers)));
+  const ViewpointIndex all_views(layout.viewpoints, std::numeric_limits<double>::infinity());
+  std::vector<std::pair<double, std::uint32_t>> near;
+  for (std::size_t o = 0; o < num_outliers; ++o) {
+    Rng rng = StreamRng(spec.seed, SynthStream::kOutlier, o);
+    Segment3 s;
+    const OutlierRegion& region = layout.outliers;
+    if (region.ball) {
+      s.p1 = region.centre + UniformInBall(rng, region.radius);
+      s.p2 = region.centre + UniformInBall(rng, region.radius);
+    } else {
+      s.p1 = Vec3(rng.Uniform(region.box.min.x(), region.box.max.x()),
+                  rng.Uniform(region.box.min.y(), region.box.max.y()),
+                  rng.Uniform(region.box.min.z(), region.box.max.z()));
+      s.p2 = s.p1 + rng.Uniform(region.min_length, region.max_length) * UniformDirection(rng);
+    }
+    const std::size_t wanted = 1 + rng.Below(static_cast<std::uint64_t>(spec.max_views));
+    index.Near(s.Midpoint(), near);
+    if (near.empty()) all_views.Near(s.Midpoint(), near);
+    row.clear();
+    for (std::size_t k = 0; k < near.size() && k < wanted; ++k) row.push_back(ViewpointId(near[k].second));
+    std::sort(row.begin(), row.end());
+    scene.segments.push_back(s);
+    scene.observations.AddRow(row);
+    scene.memberships.push_back(PlaneMembership{});
+    out.kinds.push_back(SegmentKind::kOutlier);
+  }
+
+  out.ground_truth = layout.solid.ToPolygonMesh();
+  if (spec.offset != 0.0) {
+    const Vec3 shift(spec.offset, spec.offset, 0.0);
+    for (Segment3& s : scene.segments) {
+      s.p1 += shift;
+      s.p2 += shift;
+    }
+    for (Vec3& v : scene.viewpoints) v += shift;
+    for (Plane3& p : scene.planes) p.point += shift;
+    for (Vec3& v : out.ground_truth.vertices) v += shift;
+  }
+  out.true_planes = scene.planes.raw();
+  return out;
+}
+
+}  // namespace
+
+const char* SegmentKindName(SegmentKind kind) noexcept {
+  switch (kind) {
+    case SegmentKind::kStructural:
+      return "structural";
+    case SegmentKind::kTextural:
+      return "textural";
+    case SegmentKind::kOutlier:
+      return "outlier";
+  }
+  return "unknown";
+}
+
+Status SynthSpec::Validate() const {
+  return CatchAll(kStage, [&] {
+    LINESURF_THROW_IF(family != "cube" && family != "house" && family != "room" && family != "city",
+                      kInvalidOptions, kStage,
+                      "family: unknown family '" << family << "' (cube, house, room, city)");
+    LINESURF_THROW_IF(size < 0 || size > kMaxCityBuildings, kInvalidOptions, kStage,
+                      "size: " << size << " is outside [0, " << kMaxCityBuildings << "]");
+    LINESURF_THROW_IF(!(noise_sigma >= 0.0 && noise_sigma <= kMaxNoise), kInvalidOptions, kStage,
+                      "noise_sigma: " << noise_sigma << " is outside [0, " << kMaxNoise << "]");
+    LINESURF_THROW_IF(!(outlier_fraction >= 0.0 && outlier_fraction <= kMaxOutlierFraction),
+                      kInvalidOptions, kStage,
+                      "outlier_fraction: " << outlier_fraction << " is outside [0, "
+                                           << kMaxOutlierFraction << "]");
+    LINESURF_THROW_IF(outlier_count && (*outlier_count < 0 || *outlier_count > kMaxOutlierCount),
+                      kInvalidOptions, kStage,
+                      "outlier_count: " << *outlier_count << " is outside [0, " << kMaxOutlierCount
+                                        << "]");
+    LINESURF_THROW_IF(max_pieces && (*max_pieces < 1 || *max_pieces > kMaxPieces),
+                      kInvalidOptions, kStage,
+                      "max_pieces: " << *max_pieces << " is outside [1, " << kMaxPieces << "]");
+    LINESURF_THROW_IF(max_trim && !(*max_trim >= 0.0 && *max_trim <= kMaxTrim), kInvalidOptions,
+                      kStage, "max_trim: " << *max_trim << " is outside [0, " << kMaxTrim << "]");
+    LINESURF_THROW_IF(max_views < 1 || max_views > kMaxViews, kInvalidOptions, kStage,
+                      "max_views: " << max_views << " is outside [1, " << kMaxViews << "]");
+    LINESURF_THROW_IF(!(std::abs(offset) <= kMaxOffset), kInvalidOptions, kStage,
+                      "offset: " << offset << " is outside [-" << kMaxOffset << ", " << kMaxOffset
+                                 << "]");
+  });
+}
+
+int CityBuildingCount(const SynthSpec& spec) {
+  return spec.size > 0 ? spec.size : kDefaultCityBuildings;
+}
+
+Expected<SyntheticScene> Synthesize(const SynthSpec& spec) noexcept {
+  if (Status valid = spec.Validate(); !valid) return valid.error();
+  return CatchAll(kStage, [&] { return Build(spec); });
+}
+
+}  // namespace linesurf::synth

@@ -1,0 +1,98 @@
+#pragma once
+/// @file synthesize.h
+/// @brief Seeded synthetic scenes with ground truth: 3D segments seen from viewpoints, the solid
+/// they were drawn from (closed, 2-manifold, outward oriented) and the true planes.
+///
+/// Families (metric units, see docs/synthetic.md): "cube" (the 12 edges of a cube of side 2, the
+/// robustness toy of Langlois et al. 2019), "house" (gable-roofed box with windows and a door),
+/// "room" (the inside of a room with niches and a table; viewpoints inside), "city" (N buildings
+/// on a grid, viewpoints along the streets).
+///
+/// Determinism: the same spec (including the seed) gives identical output on every run and for
+/// every thread count (counter-based random streams, one per building / line / segment).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linesurf/error.h"
+#include "engine/core/geometry.h"
+#include "engine/core/polygon_mesh.h"
+#include "engine/core/scene.h"
+
+namespace linesurf::synth {
+
+/// How endpoint noise is drawn.
+enum class NoiseModel {
+  kGaussian,     ///< each endpoint coordinate += N(0, noise_sigma^2)
+  kUniformBall,  ///< each endpoint += a point uniform in the ball of radius noise_sigma (the
+                 ///< paper's "perturbed by up to" robustness study)
+};
+
+/// What a synthetic scene looks like.
+struct SynthSpec {
+  /// "cube", "house", "room" or "city".
+  std::string family = "cube";
+  /// Seed of every random choice.
+  std::uint64_t seed = 0;
+  /// city: number of buildings, 1..100000; 0 = 16. Ignored by the other families.
+  int size = 0;
+  /// Endpoint noise in metres (standard deviation, or ball radius for kUniformBall), 0..10.
+  double noise_sigma = 0.0;
+  /// Noise distribution; Gaussian by default.
+  NoiseModel noise_model = NoiseModel::kGaussian;
+  /// Fraction of the output segments that are outliers, in [0, 0.9]: round(f / (1 - f) * inliers).
+  double outlier_fraction = 0.0;
+  /// Exact number of outliers (0..1000000); overrides outlier_fraction when set.
+  std::optional<int> outlier_count;
+  /// Each true line is cut into 1..max_pieces pieces (1..16). Default: 1 for cube (its 12 edges
+  /// exactly), 3 otherwise.
+  std::optional<int> max_pieces;
+  /// Each piece loses up to this fraction of its length at each end, uniformly drawn, in
+  /// [0, 0.4]. Default: 0 for cube, 0.1 otherwise.
+  std::optional<double> max_trim;
+  /// Views listed per segment: the nearest viewpoints that see it, at most this many (1..64).
+  int max_views = 8;
+  /// Metres added to x and y of everything (segments, viewpoints, mesh, planes) to mimic
+  /// georeferenced coordinates; |offset| <= 1e7. The scene's world_from_local stays identity.
+  double offset = 0.0;
+
+  /// Checks every field; names the first offending one.
+  [[nodiscard]] Status Validate() const;
+};
+
+/// Why a segment exists.
+enum class SegmentKind : std::uint8_t {
+  kStructural,  ///< on a sharp edge of the ground truth; supports its two true planes
+  kTextural,    ///< on a face (window, door, paintings...); supports the face's plane
+  kOutlier,     ///< random; supports no plane
+};
+
+/// Name of a kind: "structural", "textural" or "outlier".
+const char* SegmentKindName(SegmentKind kind) noexcept;
+
+struct SyntheticScene {
+  /// The spec that produced the scene (family defaults not filled in).
+  SynthSpec spec;
+  /// Segments, viewpoints, observations; planes = the true planes and memberships = the true
+  /// plane(s) of each segment (none for outliers). world_from_local is identity.
+  Scene scene;
+  /// The solid: closed, 2-manifold, outward oriented (normals from matter to empty space).
+  PolygonMesh ground_truth;
+  /// Planes of the ground-truth faces, deduplicated (same order as scene.planes).
+  std::vector<Plane3> true_planes;
+  /// One per segment.
+  std::vector<SegmentKind> kinds;
+  /// True when the viewpoints are inside the solid's cavity (room), false when outside.
+  bool interior = false;
+  /// Volume of the ground truth computed from the family's dimensions (not from the mesh).
+  double ground_truth_volume = 0.0;
+  /// True line pieces dropped because no viewpoint sees them.
+  std::size_t num_hidden_dropped = 0;
+};
+
+/// Builds the scene described by `spec`. Errors: kInvalidOptions for a bad spec.
+[[nodiscard]] Expected<SyntheticScene> Synthesize(const SynthSpec& spec) noexcept;
+
+}  // namespace linesurf::synth
