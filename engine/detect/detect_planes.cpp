@@ -1,0 +1,462 @@
+#include "engine/detect/detect_planes.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "engine/core/exception.h"
+#include "engine/core/parallel.h"
+#include "engine/core/rng.h"
+#include "engine/detect/plane_fusion.h"
+#include "engine/detect/segment_bvh.h"
+#include "engine/detect/segment_geometry.h"
+
+namespace linesurf {
+
+namespace {
+constexpr char kStage[] = "detect_planes";
+/// Candidates evaluated per parallel batch; fixed (not derived from the thread count) so that the
+/// adaptive stop sees the same batches for any number of threads.
+constexpr std::int64_t kBatchSize = 128;
+/// Grain of the parallel loops over candidates (fixed: determinism does not depend on it, speed
+/// does a little).
+constexpr std::size_t kCandidateGrain = 4;
+/// Segments shorter than this (relative to eps) have no usable direction and are never sampled.
+constexpr double kMinSampleLengthOverEps = 1e-6;
+/// A fit whose two largest spreads differ by more than this ratio is collinear: keep the hint.
+constexpr double kCollinearEigenRatio = 1e-12;
+
+double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
+
+Status Invalid(const std::string& field, const std::string& range) {
+  return Error{ErrorCode::kInvalidOptions, kStage, "PlaneDetectionOptions." + field + " must be " + range};
+}
+}  // namespace
+
+Status PlaneDetectionOptions::Validate() const {
+  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) return Invalid("epsilon", "> 0");
+  if (relative_epsilon && !(*relative_epsilon > 0.0 && *relative_epsilon < 0.5)) {
+    return Invalid("relative_epsilon", "in (0, 0.5)");
+  }
+  if (!(epsilon_fusion_factor >= 1.0)) return Invalid("epsilon_fusion_factor", ">= 1");
+  if (!(theta_fusion_deg > 0.0 && theta_fusion_deg < 90.0)) {
+    return Invalid("theta_fusion_deg", "in (0, 90)");
+  }
+  if (!(p_fusion >= 0.0 && p_fusion <= 1.0)) return Invalid("p_fusion", "in [0, 1]");
+  if (iterations < 1) return Invalid("iterations", ">= 1");
+  if (min_iterations < 1) return Invalid("min_iterations", ">= 1");
+  if (!(confidence > 0.0 && confidence < 1.0)) return Invalid("confidence", "in (0, 1)");
+  if (max_planes < 1) return Invalid("max_planes", ">= 1");
+  if (min_support < 2) return Invalid("min_support", ">= 2");
+  if (max_failed_draws < 1) return Invalid("max_failed_draws", ">= 1");
+  if (max_draws_per_candidate < 1) return Invalid("max_draws_per_candidate", ">= 1");
+  if (!(min_pair_angle_deg > 0.0 && min_pair_angle_deg < 90.0)) {
+    return Invalid("min_pair_angle_deg", "in (0, 90)");
+  }
+  if (!(min_crease_angle_deg > 0.0 && min_crease_angle_deg < 90.0)) {
+    return Invalid("min_crease_angle_deg", "in (0, 90)");
+  }
+  if (exhaustive_pairs_max_segments < 0 || exhaustive_pairs_max_segments > 4096) {
+    return Invalid("exhaustive_pairs_max_segments", "in [0, 4096]");
+  }
+  if (near_window < 1) return Invalid("near_window", ">= 1");
+  if (!(near_fraction >= 0.0 && near_fraction <= 1.0)) return Invalid("near_fraction", "in [0, 1]");
+  if (max_refit_iterations < 0) return Invalid("max_refit_iterations", ">= 0");
+  return {};
+}
+
+namespace detect {
+
+Plane3 FitPlane(std::span<const Segment3> segments, std::span<const SegmentId> ids,
+                const Vec3& hint) {
+  double total = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  for (const SegmentId s : ids) {
+    const Segment3& seg = segments[s.index()];
+    const double w = seg.Length();
+    total += 2.0 * w;
+    centroid += w * (seg.p1 + seg.p2);
+  }
+  Plane3 plane;
+  plane.normal = hint.normalized();
+  if (!(total > 0.0)) return plane;
+  centroid /= total;
+  plane.point = centroid;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const SegmentId s : ids) {
+    const Segment3& seg = segments[s.index()];
+    const double w = seg.Length();
+    const Vec3 a = seg.p1 - centroid;
+    const Vec3 b = seg.p2 - centroid;
+    cov += w * (a * a.transpose() + b * b.transpose());
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const Vec3 values = eig.eigenvalues();  // ascending
+  if (values[1] <= kCollinearEigenRatio * values[2]) return plane;  // collinear: keep hint
+  Vec3 normal = eig.eigenvectors().col(0).normalized();
+  if (normal.dot(hint) < 0.0) normal = -normal;
+  plane.normal = normal;
+  return plane;
+}
+
+namespace {
+
+struct CandidateResult {
+  bool valid = false;
+  std::uint32_t support = 0;
+  std::int64_t failed_draws = 0;
+  Plane3 plane;
+};
+
+/// One run of the multi-support RANSAC over a scene (working state of DetectPlanes).
+class Detector {
+ public:
+  Detector(const Scene& scene, const PlaneDetectionOptions& options, double epsilon,
+           const RunContext& ctx)
+      : segments_(scene.segments.raw()),
+        options_(options),
+        ctx_(ctx),
+        epsilon_(epsilon),
+        slab_(options.distance == SegmentDistance::kMeanEndpoint ? 2.0 * epsilon : epsilon),
+        sin_pair_(std::sin(DegToRad(options.min_pair_angle_deg))),
+        sin_crease_(std::sin(DegToRad(options.min_crease_angle_deg))),
+        memberships_(segments_.size()),
+        bvh_(segments_) {
+    direction_.resize(segments_.size(), Vec3::Zero());
+    sampleable_.resize(segments_.size(), false);
+    for (std::size_t i = 0; i < segments_.size(); ++i) {
+      const Vec3 d = segments_[i].p2 - segments_[i].p1;
+      const double len = d.norm();
+      if (len > kMinSampleLengthOverEps * epsilon_) {
+        direction_[i] = d / len;
+        sampleable_[i] = true;
+      }
+    }
+  }
+
+  /// Extracts planes one by one until a stopping criterion holds.
+  void ExtractAll(PlaneDetectionStats& stats) {
+    while (static_cast<std::int32_t>(planes_.size()) < options_.max_planes) {
+      ctx_.ThrowIfCancelled(kStage);
+      ctx_.ReportProgress(kStage, static_cast<double>(planes_.size()) / options_.max_planes);
+      const std::vector<SegmentId> pool = SamplingPool();
+      if (pool.size() < 2) break;
+      const std::optional<CandidateResult> best = SearchPlane(pool, stats);
+      if (!best || best->support < static_cast<std::uint32_t>(options_.min_support)) break;
+      Plane3 plane = best->plane;
+      std::vector<SegmentId> inliers = Collect(plane);
+      for (std::int32_t it = 0; it < options_.max_refit_iterations; ++it) {
+        const Plane3 refit = FitPlane(segments_, inliers, plane.normal);
+        std::vector<SegmentId> again = Collect(refit);
+        if (again.size() < inliers.size()) break;  // the refit lost support: keep the previous
+        const bool stable = again == inliers;
+        plane = refit;
+        inliers = std::move(again);
+        if (stable) break;
+      }
+      if (inliers.size() < static_cast<std::size_t>(options_.min_support)) break;
+      const PlaneId id(planes_.size());
+      for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
+      planes_.push_back({plane, std::move(inliers)});
+    }
+  }
+
+  std::vector<detect::SupportedPlane>& planes() { return planes_; }
+
+ private:
+  bool Sampleable(SegmentId s) const {
+    const PlaneMembership& m = memberships_[s.index()];
+    if (!sampleable_[s.index()] || m.count >= 2) return false;
+    return !(options_.single_support && m.count == 1);
+  }
+
+  std::vector<SegmentId> SamplingPool() const {
+    std::vector<SegmentId> pool;
+    for (std::size_t i = 0; i < segments_.size(); ++i) {
+      if (Sampleable(SegmentId(i))) pool.emplace_back(i);
+    }
+    return pool;
+  }
+
+  bool IsInlier(SegmentId s, const Plane3& plane) const {
+    const PlaneMembership& m = memberships_[s.index()];
+    const Segment3& seg = segments_[s.index()];
+    if (m.count >= 2) return false;
+    if (m.count == 0 || options_.no_structural_condition) {
+      if (m.count == 1 && options_.single_support) return false;
+      return SegmentPlaneDistance(seg, plane, options_.distance) <= epsilon_;
+    }
+    if (options_.single_support) return false;
+    // Structural condition: a segment already on P' joins P only along the crease P ∩ P'.
+    detect::CreaseLine line;
+    if (!detect::IntersectPlanes(plane, planes_[m.planes[0].index()].plane, sin_crease_, line)) {
+      return false;
+    }
+    return detect::SegmentLineDistance(seg, line, options_.distance) <= epsilon_;
+  }
+
+  std::uint32_t Count(const Plane3& plane) const {
+    std::uint32_t count = 0;
+    bvh_.ForEachInSlab(plane, slab_, [&](SegmentId s) { count += IsInlier(s, plane) ? 1 : 0; });
+    return count;
+  }
+
+  std::vector<SegmentId> Collect(const Plane3& plane) const {
+    std::vector<SegmentId> inliers;
+    bvh_.ForEachInSlab(plane, slab_, [&](SegmentId s) {
+      if (IsInlier(s, plane)) inliers.push_back(s);
+    });
+    std::sort(inliers.begin(), inliers.end());
+    return inliers;
+  }
+
+  /// The plane through a and b (containing both directions, halfway between the two infinite
+  /// lines), if the pair is valid: not near-parallel, lines within 2 eps, and b not on a plane
+  /// of a (never re-propose a plane already extracted).
+  std::optional<Plane3> PlaneFromPair(SegmentId a, SegmentId b) const {
+    if (a == b) return std::nullopt;
+    const PlaneMembership& ma = memberships_[a.index()];
+    const PlaneMembership& mb = memberships_[b.index()];
+    for (std::uint8_t i = 0; i < ma.count; ++i) {
+      if (mb.Contains(ma.planes[i])) return std::nullopt;
+    }
+    const Vec3 cross = direction_[a.index()].cross(direction_[b.index()]);
+    const double sin = cross.norm();
+    if (sin < sin_pair_) return std::nullopt;
+    Plane3 plane;
+    plane.normal = cross / sin;
+    const Vec3 mid_a = segments_[a.index()].Midpoint();
+    const Vec3 mid_b = segments_[b.index()].Midpoint();
+    if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * epsilon_) return std::nullopt;
+    plane.point = 0.5 * (mid_a + mid_b);
+    return plane;
+  }
+
+  /// Candidate k of plane j: draws from its own stream, so any thread may evaluate it.
+  CandidateResult RandomCandidate(const std::vector<SegmentId>& pool, std::size_t plane_index,
+                                  std::int64_t k) const {
+    CandidateResult result;
+    Rng rng(MixSeed(options_.seed, RngStage::kDetect, plane_index, static_cast<std::uint64_t>(k)));
+    const auto& order = bvh_.Order();
+    const auto window = static_cast<std::int64_t>(options_.near_window);
+    const auto n = static_cast<std::int64_t>(order.size());
+    for (std::int32_t attempt = 0; attempt < options_.max_draws_per_candidate; ++attempt) {
+      const SegmentId a = pool[rng.Below(pool.size())];
+      SegmentId b;
+      if (rng.Uniform() < options_.near_fraction) {
+        std::int64_t offset = static_cast<std::int64_t>(rng.Below(2 * window)) - window;
+        if (offset >= 0) ++offset;  // in [-window, window] \ {0}
+        const std::int64_t pos = std::clamp<std::int64_t>(bvh_.PositionOf(a) + offset, 0, n - 1);
+        b = order[static_cast<std::size_t>(pos)];
+        if (!Sampleable(b)) {
+          ++result.failed_draws;
+          continue;
+        }
+      } else {
+        b = pool[rng.Below(pool.size())];
+      }
+      const std::optional<Plane3> plane = PlaneFromPair(a, b);
+      if (!plane) {
+        ++result.failed_draws;
+        continue;
+      }
+      result.valid = true;
+      result.plane = *plane;
+      result.support = Count(*plane);
+      return result;
+    }
+    return result;
+  }
+
+  /// Evaluates candidates [0, count) with `make(k)` in parallel and folds them, in k order, into
+  /// `best` (support, then smallest k).
+  template <typename Make>
+  void EvaluateBatch(std::int64_t first, std::int64_t count, Make&& make,
+                     std::optional<CandidateResult>& best, PlaneDetectionStats& stats) const {
+    std::vector<CandidateResult> results(static_cast<std::size_t>(count));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, results.size(), kCandidateGrain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          results[i] = make(first + static_cast<std::int64_t>(i));
+                        }
+                      });
+    for (const CandidateResult& r : results) {
+      stats.failed_draws += r.failed_draws;
+      if (!r.valid) continue;
+      ++stats.candidates_evaluated;
+      if (!best || r.support > best->support) best = r;
+    }
+  }
+
+  std::optional<CandidateResult> SearchPlane(const std::vector<SegmentId>& pool,
+                                             PlaneDetectionStats& stats) const {
+    std::optional<CandidateResult> best;
+    const std::size_t plane_index = planes_.size();
+    if (pool.size() <= static_cast<std::size_t>(options_.exhaustive_pairs_max_segments)) {
+      std::vector<std::pair<SegmentId, SegmentId>> pairs;
+      for (std::size_t i = 0; i < pool.size(); ++i) {
+        for (std::size_t j = i + 1; j < pool.size(); ++j) pairs.emplace_back(pool[i], pool[j]);
+      }
+      EvaluateBatch(
+          0, static_cast<std::int64_t>(pairs.size()),
+          [&](std::int64_t k) {
+            CandidateResult r;
+            const auto& [a, b] = pairs[static_cast<std::size_t>(k)];
+            const std::optional<Plane3> plane = PlaneFromPair(a, b);
+            if (!plane) {
+              r.failed_draws = 1;
+              return r;
+            }
+            r.valid = true;
+            r.plane = *plane;
+            r.support = Count(*plane);
+            return r;
+          },
+          best, stats);
+      return best;
+    }
+    const double log_miss = std::log(1.0 - options_.confidence);
+    const double n = static_cast<double>(pool.size());
+    const double window = 2.0 * options_.near_window;
+    std::int64_t done = 0;
+    const std::int64_t failed_before = stats.failed_draws;
+    while (done < options_.iterations) {
+      const std::int64_t count = std::min(kBatchSize, options_.iterations - done);
+      EvaluateBatch(
+          done, count, [&](std::int64_t k) { return RandomCandidate(pool, plane_index, k); }, best,
+          stats);
+      done += count;
+      if (stats.failed_draws - failed_before >= options_.max_failed_draws) break;
+      if (best && done >= options_.min_iterations) {
+        // Probability that one candidate hits the best plane: the first segment on it, then the
+        // second on it too (near draw: the plane fills the window up to its support).
+        const double s = best->support;
+        const double p_first = std::min(1.0, s / n);
+        const double p_second = options_.near_fraction * std::min(1.0, s / window) +
+                                (1.0 - options_.near_fraction) * p_first;
+        const double w = p_first * p_second;
+        if (w >= 1.0) break;
+        const double needed = log_miss / std::log1p(-w);
+        if (static_cast<double>(done) >= needed) break;
+      }
+      ctx_.ThrowIfCancelled(kStage);
+    }
+    return best;
+  }
+
+  const std::vector<Segment3>& segments_;
+  const PlaneDetectionOptions& options_;
+  const RunContext& ctx_;
+  double epsilon_;
+  double slab_;
+  double sin_pair_;
+  double sin_crease_;
+  std::vector<PlaneMembership> memberships_;
+  std::vector<Vec3> direction_;
+  std::vector<bool> sampleable_;
+  detect::SegmentBvh bvh_;
+  std::vector<detect::SupportedPlane> planes_;
+};
+
+/// Flips `plane` toward the majority of the viewpoints that observe its inliers (canonical sign
+/// first: largest normal component positive, which also breaks ties).
+void OrientPlane(const Scene& scene, const std::vector<SegmentId>& inliers, Plane3& plane) {
+  int axis = 0;
+  plane.normal.cwiseAbs().maxCoeff(&axis);
+  if (plane.normal[axis] < 0.0) plane.normal = -plane.normal;
+  if (scene.observations.NumRows() != scene.segments.size()) return;
+  std::int64_t votes = 0;
+  for (const SegmentId s : inliers) {
+    for (const ViewpointId v : scene.observations[s]) {
+      const double side = plane.SignedDistance(scene.viewpoints[v]);
+      votes += side > 0.0 ? 1 : (side < 0.0 ? -1 : 0);
+    }
+  }
+  if (votes < 0) plane.normal = -plane.normal;
+}
+
+double SceneDiagonal(const Scene& scene) {
+  Box3 box;
+  for (const Segment3& s : scene.segments) {
+    box.Extend(s.p1);
+    box.Extend(s.p2);
+  }
+  return box.IsEmpty() ? 0.0 : box.Extent().norm();
+}
+
+}  // namespace
+}  // namespace detect
+
+Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
+                                            const PlaneDetectionOptions& options,
+                                            const RunContext& ctx) noexcept {
+  if (Status valid = options.Validate(); !valid) return valid.error();
+  return CatchAll(kStage, [&]() -> PlaneDetectionResult {
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+      const Segment3& s = scene.segments.raw()[i];
+      LINESURF_THROW_IF(!s.p1.allFinite() || !s.p2.allFinite(), kInvalidInput, kStage,
+                        "segment " << i << " has a non-finite endpoint");
+    }
+    PlaneDetectionResult result;
+    double epsilon = options.epsilon;
+    if (options.relative_epsilon) {
+      epsilon = *options.relative_epsilon * detect::SceneDiagonal(scene);
+      LINESURF_THROW_IF(!(epsilon > 0.0), kDegenerate, kStage,
+                        "relative_epsilon needs a scene of non-zero extent");
+    }
+    result.stats.epsilon = epsilon;
+    std::vector<detect::SupportedPlane> planes;
+    RunInArena(ctx, [&] {
+      detect::Detector detector(scene, options, epsilon, ctx);
+      detector.ExtractAll(result.stats);
+      planes = std::move(detector.planes());
+    });
+    result.stats.planes_before_fusion = static_cast<std::int32_t>(planes.size());
+    const auto fusion_start = std::chrono::steady_clock::now();
+    detect::FusionParameters fusion;
+    fusion.epsilon = epsilon;
+    fusion.epsilon_fusion = options.epsilon_fusion_factor * epsilon;
+    fusion.max_angle_rad = DegToRad(options.theta_fusion_deg);
+    fusion.min_shared_fraction = options.p_fusion;
+    fusion.distance = options.distance;
+    result.stats.merges = detect::FusePlanes(scene.segments.raw(), fusion, planes);
+    result.stats.seconds_fusion =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - fusion_start).count();
+    result.stats.planes_after_fusion = static_cast<std::int32_t>(planes.size());
+
+    result.memberships = IdVector<SegmentId, PlaneMembership>(scene.segments.size());
+    for (detect::SupportedPlane& sp : planes) {
+      const PlaneId id = result.planes.NextId();
+      // Keep the detected plane; move its point to the projection of the inliers' centroid.
+      const Plane3 fit = detect::FitPlane(scene.segments.raw(), sp.inliers, sp.plane.normal);
+      Plane3 plane = sp.plane;
+      plane.point = fit.point - plane.SignedDistance(fit.point) * plane.normal;
+      detect::OrientPlane(scene, sp.inliers, plane);
+      PlaneSupport support;
+      support.inlier_count = static_cast<std::uint32_t>(sp.inliers.size());
+      for (const SegmentId s : sp.inliers) {
+        support.inlier_length += scene.segments[s].Length();
+        LINESURF_ASSERT(result.memberships[s].Add(id));
+      }
+      support.inliers = std::move(sp.inliers);
+      result.planes.push_back(plane);
+      result.support.push_back(std::move(support));
+    }
+    for (const PlaneMembership& m : result.memberships) {
+      (m.count == 0 ? result.stats.num_l0 : m.count == 1 ? result.stats.num_l1 : result.stats.num_l2)++;
+    }
+    result.stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  });
+}
+
+}  // namespace linesurf
