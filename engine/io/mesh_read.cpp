@@ -1,7 +1,6 @@
 // Mesh readers: PLY (ascii, binary little/big endian), OBJ, OFF.
 
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <string_view>
@@ -10,54 +9,12 @@
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/mesh_io.h"
+#include "engine/io/text_lines.h"
 
 namespace linesurf::io {
 namespace {
 
 constexpr const char* kStage = "read_mesh";
-
-/// Splits text into lines and whitespace-separated tokens, tracking 1-based line numbers.
-class LineReader {
- public:
-  explicit LineReader(std::string_view text, std::size_t pos = 0) : text_(text), pos_(pos) {}
-
-  /// Next line's tokens (empty vector for a blank line); false at the end of the text.
-  bool Next(std::vector<std::string_view>& tokens) {
-    tokens.clear();
-    if (pos_ >= text_.size()) return false;
-    std::size_t end = text_.find('\n', pos_);
-    if (end == std::string_view::npos) end = text_.size();
-    std::string_view line = text_.substr(pos_, end - pos_);
-    pos_ = end + 1;
-    ++line_number_;
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-      std::size_t j = i;
-      while (j < line.size() && !std::isspace(static_cast<unsigned char>(line[j]))) ++j;
-      if (j > i) tokens.push_back(line.substr(i, j - i));
-      i = j;
-    }
-    return true;
-  }
-  [[nodiscard]] std::size_t line_number() const { return line_number_; }
-  [[nodiscard]] std::size_t position() const { return pos_; }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  std::size_t line_number_ = 0;
-};
-
-bool ParseDouble(std::string_view token, double& value) {
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  return result.ec == std::errc() && result.ptr == token.data() + token.size();
-}
-
-bool ParseInt(std::string_view token, long long& value) {
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  return result.ec == std::errc() && result.ptr == token.data() + token.size();
-}
 
 #define LINESURF_MESH_FAIL_IF(cond, where, msg) \
   LINESURF_THROW_IF(cond, kInvalidInput, kStage, file << ": " << where << ": " << msg)

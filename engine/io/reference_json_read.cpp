@@ -7,14 +7,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <set>
 #include <sstream>
-#include <unordered_map>
 
 #include "engine/core/exception.h"
 #include "engine/io/file_access.h"
 #include "engine/io/reference_json.h"
+#include "engine/io/viewpoint_table.h"
 
 namespace linesurf::io {
 namespace {
@@ -56,19 +55,6 @@ struct Frame {
   std::string key;        ///< objects: the current key
   Field field = Field::kUnknown;
   std::uint32_t seen = 0;  ///< objects: bit mask of the fields seen (duplicate detection)
-};
-
-/// Exact viewpoint deduplication key: the three coordinates, -0.0 folded into 0.0.
-struct ViewKey {
-  std::array<double, 3> c;
-  bool operator==(const ViewKey& o) const { return c == o.c; }
-};
-struct ViewKeyHash {
-  std::size_t operator()(const ViewKey& k) const noexcept {
-    std::size_t h = 1469598103934665603ull;
-    for (double v : k.c) h = (h ^ std::hash<double>()(v)) * 1099511628211ull;
-    return h;
-  }
 };
 
 /// The line being read.
@@ -349,7 +335,7 @@ class SceneSax {
   std::size_t lines_with_residuals_ = 0;
   std::vector<std::int64_t> plane_index_items_;
   std::vector<std::size_t> plane_index_offsets_{0};
-  std::unordered_map<ViewKey, ViewpointId, ViewKeyHash> view_ids_;  // lookup only
+  ViewpointTable view_ids_{scene_.viewpoints};
   std::set<std::string> unknown_keys_;                               // ordered: warnings
   std::vector<ViewpointId> row_;
 };
@@ -372,12 +358,7 @@ bool SceneSax::FinishLine() {
   scene_.segments.push_back(Segment3{Vec3(line_.p1[0], line_.p1[1], line_.p1[2]),
                                      Vec3(line_.p2[0], line_.p2[1], line_.p2[2])});
   row_.clear();
-  for (const auto& v : line_.views) {
-    ViewKey key{{v[0] + 0.0, v[1] + 0.0, v[2] + 0.0}};  // + 0.0 folds -0.0 into 0.0
-    auto [it, inserted] = view_ids_.try_emplace(key, scene_.viewpoints.NextId());
-    if (inserted) scene_.viewpoints.push_back(Vec3(v[0], v[1], v[2]));
-    row_.push_back(it->second);
-  }
+  for (const auto& v : line_.views) row_.push_back(view_ids_.Intern(Vec3(v[0], v[1], v[2])));
   scene_.observations.AddRow(row_);
   if (!line_.views.empty()) ++lines_with_views_;
   if (has_residuals) {
