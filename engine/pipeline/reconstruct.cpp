@@ -1,0 +1,196 @@
+#include "engine/pipeline/reconstruct.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/core/exception.h"
+#include "engine/pipeline/decide_scene_mode.h"
+#include "engine/pipeline/extract_surface.h"
+#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/stage_timer.h"
+
+namespace linesurf::pipeline {
+namespace {
+
+constexpr const char* kStage = "reconstruct";
+
+/// Unwraps a stage result or rethrows its error unchanged.
+template <typename T>
+T Take(Expected<T>&& e) {
+  if (!e) throw LinesurfException(e.error());
+  return std::move(e.value());
+}
+
+Box3 SceneBox(const Scene& scene, double margin) {
+  Box3 box;
+  for (const Segment3& s : scene.segments) {
+    box.Extend(s.p1);
+    box.Extend(s.p2);
+  }
+  for (const Vec3& v : scene.viewpoints) box.Extend(v);
+  const Vec3 extent = box.Extent();
+  const double floor = margin * extent.norm();
+  for (int a = 0; a < 3; ++a) {
+    const double grow = std::max(margin * extent[a], floor);
+    box.min[a] -= grow;
+    box.max[a] += grow;
+  }
+  return box;
+}
+
+}  // namespace
+
+const char* SceneModeName(SceneMode mode) noexcept {
+  switch (mode) {
+    case SceneMode::kExterior:
+      return "exterior";
+    case SceneMode::kInterior:
+      return "interior";
+    case SceneMode::kAuto:
+      return "auto";
+  }
+  return "unknown";
+}
+
+Status ReconstructOptions::Validate() const {
+  if (Status s = sanitize.Validate(); !s) return s;
+  if (!use_given_planes) {
+    if (Status s = planes.Validate(); !s) return s;
+  }
+  if (Status s = energy.Validate(); !s) return s;
+  if (Status s = solver.Validate(); !s) return s;
+  if (Status s = complex.Validate(); !s) return s;
+  if (!(box_margin > 0.0 && box_margin <= 10.0)) {
+    return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
+                 "box_margin must be in (0, 10]"};
+  }
+  if (num_threads < 0) {
+    return Error{ErrorCode::kInvalidOptions, "reconstruct_options", "num_threads must be >= 0"};
+  }
+  return {};
+}
+
+Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOptions& options,
+                                        const RunContext& ctx) noexcept {
+  return CatchAll(kStage, [&]() -> ReconstructResult {
+    if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
+    // One context for every stage: the caller's callbacks, the options' thread count.
+    RunContext stage_ctx;
+    stage_ctx.num_threads = options.num_threads != 0 ? options.num_threads : ctx.num_threads;
+    stage_ctx.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
+    stage_ctx.on_progress = [&ctx](const Progress& p) {
+      ctx.ReportProgress(p.stage, p.stage_fraction);
+    };
+    stage_ctx.log = ctx.log;
+
+    ReconstructResult result;
+    RunStats& stats = result.stats;
+    StageTimer timer;
+
+    timer.Start("sanitize");
+    Scene scene = input;
+    if (!options.use_given_planes) {
+      scene.planes.clear();
+      scene.memberships.clear();
+    } else {
+      LINESURF_THROW_IF(scene.planes.empty() || !scene.HasMemberships(), kInvalidInput, kStage,
+                        "use_given_planes: the scene has no planes or plane memberships");
+    }
+    SanitizeResult sane = Take(SanitizeScene(std::move(scene), options.sanitize));
+    scene = std::move(sane.scene);
+    result.warnings = std::move(sane.warnings);
+    result.world_from_local = scene.world_from_local;
+    stats.input_segments = sane.stats.input_segments;
+    stage_ctx.ThrowIfCancelled(kStage);
+
+    timer.Start("detect");
+    if (!options.use_given_planes) {
+      PlaneDetectionOptions detect = options.planes;
+      detect.seed = options.seed;
+      PlaneDetectionResult planes = Take(DetectPlanes(scene, detect, stage_ctx));
+      scene.planes = std::move(planes.planes);
+      scene.memberships = std::move(planes.memberships);
+    }
+    LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
+                      "no plane: nothing to reconstruct from");
+
+    timer.Start("complex");
+    const Box3 box = SceneBox(scene, options.box_margin);
+    partition::CellComplexResult built =
+        Take(partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
+    const CellComplex& cx = built.complex;
+    result.warnings.insert(result.warnings.end(), built.warnings.begin(), built.warnings.end());
+    stats.planes_in_complex = built.stats.planes_used;
+
+    timer.Start("evidence");
+    bool interior = options.scene_mode == SceneMode::kInterior;
+    if (options.scene_mode == SceneMode::kAuto) {
+      const SceneModeDecision decision = DecideSceneMode(scene);
+      interior = decision.interior;
+      stats.scene_mode_reason = decision.reason;
+    }
+    stats.scene_mode = interior ? "interior" : "exterior";
+    EvidenceResult evidence =
+        Take(ComputeEvidence(cx, scene, options.energy,
+                             interior ? BoundaryMode::kInterior : BoundaryMode::kExterior,
+                             stage_ctx));
+    result.warnings.insert(result.warnings.end(), evidence.warnings.begin(),
+                           evidence.warnings.end());
+
+    timer.Start("solve");
+    const solver::LabelingResult labeling =
+        Take(solver::SolveLabeling(evidence.energy, options.solver, stage_ctx));
+
+    timer.Start("extract");
+    ExtractOptions extract;
+    extract.outside_full = interior;
+    extract.triangulate = options.triangulate;
+    ExtractResult surface = Take(ExtractSurface(cx, labeling.labels, extract));
+    result.mesh = std::move(surface.mesh);
+    const IndexTopology topology = CheckIndexTopology(result.mesh);
+    for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
+    timer.Stop();
+
+    // Planes back to world coordinates.
+    result.planes = scene.planes;
+    for (Plane3& p : result.planes) p.point = scene.world_from_local.Apply(p.point);
+
+    stats.stage_seconds = timer.Stages();
+    stats.total_seconds = timer.TotalSeconds();
+    stats.segments = scene.NumSegments();
+    stats.viewpoints = scene.viewpoints.size();
+    stats.observations = scene.observations.NumItems();
+    stats.planes = scene.planes.size();
+    for (int k = 0; k < 3; ++k) stats.segments_with_planes[k] = evidence.stats.segments_with_planes[k];
+    stats.cells = cx.NumCells();
+    stats.facets = cx.NumFacets();
+    stats.edges = cx.NumEdges();
+    stats.vertices = cx.NumVertices();
+    stats.sigma = evidence.stats.sigma;
+    stats.pair_terms = evidence.energy.NumPairs();
+    stats.structural_groups = evidence.energy.NumStructuralGroups();
+    stats.parity_groups = evidence.energy.NumParityGroups();
+    stats.fixed_cells = evidence.stats.fixed_cells;
+    stats.lp_variables = labeling.lp_columns;
+    stats.lp_constraints = labeling.lp_rows;
+    stats.lp_nonzeros = labeling.lp_nonzeros;
+    stats.solver_backend = labeling.backend;
+    stats.solver_status = labeling.status;
+    stats.objective = labeling.labels_objective;
+    stats.relaxed_objective = labeling.relaxed_objective;
+    stats.fractional_cells = labeling.fractional_cells;
+    stats.full_cells = static_cast<std::size_t>(
+        std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
+    stats.mesh_vertices = result.mesh.vertices.size();
+    stats.mesh_faces = result.mesh.NumFaces();
+    stats.mesh_closed = topology.closed;
+    stats.mesh_manifold = topology.manifold;
+    stats.mesh_volume = topology.signed_volume;
+    stats.split_vertices = surface.stats.split_vertices;
+    stats.peak_memory_bytes = PeakRssBytes();
+    return result;
+  });
+}
+
+}  // namespace linesurf::pipeline
