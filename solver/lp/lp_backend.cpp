@@ -64,7 +64,11 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
   result.labels = std::move(rounded.labels);
   result.fractional_cells = rounded.fractional_cells;
   result.tie_cells = rounded.tie_cells;
-  result.labels_objective = energy.Evaluate(std::span<const std::uint8_t>(result.labels));
+  result.rounded_objective = energy.Evaluate(std::span<const std::uint8_t>(result.labels));
+  result.local_search_flips = ImproveLabels(energy, options.local_search_passes, result.labels);
+  result.labels_objective = result.local_search_flips == 0
+                                ? result.rounded_objective
+                                : energy.Evaluate(std::span<const std::uint8_t>(result.labels));
   result.status = solution.status;
   result.iterations = solution.iterations;
   result.seconds =
@@ -87,6 +91,9 @@ Status LabelingOptions::Validate() const {
     return InvalidOption("pdhg_tolerance: must be in (0, 1e-1]");
   }
   if (pdhg_max_iterations < 1) return InvalidOption("pdhg_max_iterations: must be >= 1");
+  if (local_search_passes < 0 || local_search_passes > 1000) {
+    return InvalidOption("local_search_passes: must be in [0, 1000]");
+  }
   if (!(time_limit_seconds >= 0.0) || !std::isfinite(time_limit_seconds)) {
     return InvalidOption("time_limit_seconds: must be finite and >= 0");
   }

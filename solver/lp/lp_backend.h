@@ -15,7 +15,7 @@
 ///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
 ///               else "pdhg" (see docs/design/lp_backend.md for the measurements).
 ///
-/// Rounding: label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
+/// Rounding (then optional local search, LabelingOptions::local_search_passes): label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
 /// Ties (|x_c - 0.5| <= kTieTolerance) are decided one by one in increasing CellId order: each
 /// takes the label of lower energy given the labels decided so far (undecided ties count as
 /// empty); on equal energy the cell is empty. Fixed cells keep their label.
@@ -48,6 +48,10 @@ struct LabelingOptions {
   std::size_t auto_clp_max_columns = 200000;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
   double time_limit_seconds = 0.0;
+  /// Sweeps of local search after rounding (each free cell, in id order, flips when that lowers
+  /// the energy); 0 = plain rounding as in the paper; range [0, 1000]. It only ever lowers the
+  /// energy of the labels; see docs/solver.md for its effect.
+  int local_search_passes = 0;
 
   /// Names the first offending field.
   [[nodiscard]] Status Validate() const;
@@ -62,8 +66,12 @@ struct LabelingResult {
   /// relaxed cell values with optimal slacks. For the exact backends (clp, maxflow) the LP
   /// optimum, a lower bound on the integral optimum; for pdhg within its tolerance of it.
   double relaxed_objective = 0.0;
-  /// EnergyInput::Evaluate(labels).
+  /// EnergyInput::Evaluate(labels) (after local search, if any).
   double labels_objective = 0.0;
+  /// Energy of the rounded labels before local search.
+  double rounded_objective = 0.0;
+  /// Cells flipped by local search.
+  std::size_t local_search_flips = 0;
   /// "optimal", or the backend's own word for a successful stop.
   std::string status;
   /// Backend that actually ran ("auto" resolved).

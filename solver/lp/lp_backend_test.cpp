@@ -221,3 +221,33 @@ TEST(SolveLabeling, EmptyEnergySolves) {
 
 }  // namespace
 }  // namespace linesurf::solver
+
+namespace linesurf::solver {
+namespace {
+
+TEST(SolveLabeling, PdhgIsIdenticalForAnyThreadCount) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 14;  // LP of ~16k columns: several parallel chunks
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult one = MustSolve(e, "pdhg", 1);
+  ASSERT_GT(one.lp_columns, 10000u);
+  for (int threads : {2, 8}) {
+    const LabelingResult many = MustSolve(e, "pdhg", threads);
+    EXPECT_EQ(many.labels, one.labels) << threads;
+    EXPECT_EQ(many.relaxed, one.relaxed) << threads;  // bitwise
+    EXPECT_EQ(many.iterations, one.iterations) << threads;
+  }
+}
+
+TEST(SolveLabeling, PdhgIsCloseToClpOnAGridEnergy) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 10;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult clp = MustSolve(e, "clp");
+  const LabelingResult pdhg = MustSolve(e, "pdhg");
+  EXPECT_NEAR(pdhg.relaxed_objective, clp.relaxed_objective, 1e-3 * clp.relaxed_objective);
+  EXPECT_GE(pdhg.relaxed_objective, clp.relaxed_objective - 1e-6);
+}
+
+}  // namespace
+}  // namespace linesurf::solver

@@ -39,6 +39,54 @@ double LocalEnergy(const EnergyInput& e, std::span<const TermRef> terms, CellId 
   return value;
 }
 
+// Terms touching each of a list of cells, in term order (CSR).
+class TermIncidence {
+ public:
+  TermIncidence(const EnergyInput& e, std::span<const CellId> cells) {
+    std::vector<std::uint32_t> slot(e.NumCells(), kNone);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      slot[cells[i].index()] = static_cast<std::uint32_t>(i);
+    }
+    offsets_.assign(cells.size() + 1, 0);
+    // Two passes (count, fill) over the same term walk.
+    for (int pass = 0; pass < 2; ++pass) {
+      auto add = [&](CellId c, TermKind kind, std::size_t index) {
+        const std::uint32_t s = slot[c.index()];
+        if (s == kNone) return;
+        if (pass == 0) {
+          ++offsets_[s + 1];
+        } else {
+          terms_[next_[s]++] = {kind, static_cast<std::uint32_t>(index)};
+        }
+      };
+      for (std::size_t p = 0; p < e.pairs.size(); ++p) {
+        add(e.pairs[p].a, TermKind::kPair, p);
+        add(e.pairs[p].b, TermKind::kPair, p);
+      }
+      for (std::size_t g = 0; g < e.NumStructuralGroups(); ++g) {
+        for (CellId c : e.StructuralGroup(g)) add(c, TermKind::kStructural, g);
+      }
+      for (std::size_t g = 0; g < e.NumParityGroups(); ++g) {
+        for (CellId c : e.ParityGroup(g)) add(c, TermKind::kParity, g);
+      }
+      if (pass == 0) {
+        for (std::size_t i = 0; i < cells.size(); ++i) offsets_[i + 1] += offsets_[i];
+        terms_.resize(offsets_.back());
+        next_.assign(offsets_.begin(), offsets_.end() - 1);
+      }
+    }
+  }
+  [[nodiscard]] std::span<const TermRef> Terms(std::size_t i) const {
+    return {terms_.data() + offsets_[i], terms_.data() + offsets_[i + 1]};
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> offsets_;
+  std::vector<std::uint32_t> next_;
+  std::vector<TermRef> terms_;
+};
+
 }  // namespace
 
 RoundedLabels RoundLabels(const EnergyInput& energy, std::span<const double> relaxed) {
@@ -63,33 +111,47 @@ RoundedLabels RoundLabels(const EnergyInput& energy, std::span<const double> rel
   out.tie_cells = ties.size();
   if (ties.empty()) return out;
 
-  // Incidence of the tie cells only: cell -> terms, in term order.
-  std::vector<std::uint32_t> slot(relaxed.size(), 0xFFFFFFFFu);
-  for (std::size_t i = 0; i < ties.size(); ++i) slot[ties[i].index()] = static_cast<std::uint32_t>(i);
-  std::vector<std::vector<TermRef>> incidence(ties.size());
-  auto add = [&](CellId c, TermKind kind, std::size_t index) {
-    const std::uint32_t s = slot[c.index()];
-    if (s != 0xFFFFFFFFu) incidence[s].push_back({kind, static_cast<std::uint32_t>(index)});
-  };
-  for (std::size_t p = 0; p < energy.pairs.size(); ++p) {
-    add(energy.pairs[p].a, TermKind::kPair, p);
-    add(energy.pairs[p].b, TermKind::kPair, p);
-  }
-  for (std::size_t g = 0; g < energy.NumStructuralGroups(); ++g) {
-    for (CellId c : energy.StructuralGroup(g)) add(c, TermKind::kStructural, g);
-  }
-  for (std::size_t g = 0; g < energy.NumParityGroups(); ++g) {
-    for (CellId c : energy.ParityGroup(g)) add(c, TermKind::kParity, g);
-  }
+  const TermIncidence incidence(energy, ties);
   for (std::size_t i = 0; i < ties.size(); ++i) {
     const CellId c = ties[i];
     out.labels[c.index()] = 1;
-    const double full = LocalEnergy(energy, incidence[i], c, out.labels);
+    const double full = LocalEnergy(energy, incidence.Terms(i), c, out.labels);
     out.labels[c.index()] = 0;
-    const double empty = LocalEnergy(energy, incidence[i], c, out.labels);
+    const double empty = LocalEnergy(energy, incidence.Terms(i), c, out.labels);
     out.labels[c.index()] = full < empty ? 1 : 0;
   }
   return out;
+}
+
+std::size_t ImproveLabels(const EnergyInput& energy, int max_passes,
+                          std::vector<std::uint8_t>& labels) {
+  LINESURF_ASSERT(labels.size() == energy.NumCells());
+  std::vector<CellId> free;
+  for (std::size_t c = 0; c < energy.NumCells(); ++c) {
+    if (energy.fixed[CellId(c)] == CellFix::kFree) free.push_back(CellId(c));
+  }
+  if (free.empty() || max_passes <= 0) return 0;
+  const TermIncidence incidence(energy, free);
+  std::size_t flips = 0;
+  for (int pass = 0; pass < max_passes; ++pass) {
+    std::size_t pass_flips = 0;
+    for (std::size_t i = 0; i < free.size(); ++i) {
+      const CellId c = free[i];
+      const std::uint8_t current = labels[c.index()];
+      const double keep = LocalEnergy(energy, incidence.Terms(i), c, labels);
+      labels[c.index()] = current ^ 1u;
+      const double flip = LocalEnergy(energy, incidence.Terms(i), c, labels);
+      // Flip only on a decrease beyond rounding noise, so passes terminate.
+      if (flip < keep - kImproveTolerance * (1.0 + std::abs(keep))) {
+        ++pass_flips;
+      } else {
+        labels[c.index()] = current;
+      }
+    }
+    flips += pass_flips;
+    if (pass_flips == 0) break;
+  }
+  return flips;
 }
 
 }  // namespace linesurf::solver

@@ -23,4 +23,13 @@ struct RoundedLabels {
 [[nodiscard]] RoundedLabels RoundLabels(const EnergyInput& energy,
                                         std::span<const double> relaxed);
 
+/// Relative energy decrease a flip must bring in ImproveLabels.
+inline constexpr double kImproveTolerance = 1e-12;
+
+/// Local search after rounding: up to `max_passes` sweeps over the free cells in id order, each
+/// cell flipped when that lowers the energy (given the current labels of all others). Never
+/// raises the energy; deterministic, serial. Returns the number of flips.
+std::size_t ImproveLabels(const EnergyInput& energy, int max_passes,
+                          std::vector<std::uint8_t>& labels);
+
 }  // namespace linesurf::solver

@@ -43,3 +43,25 @@ TEST(RoundLabels, TieWithEqualEnergyIsEmpty) {
 
 }  // namespace
 }  // namespace linesurf::solver
+
+namespace linesurf::solver {
+namespace {
+
+TEST(ImproveLabels, FlipsOnlyWhenTheEnergyDrops) {
+  // Chain 0-1-2 with strong pairwise terms; cell 1 rounded wrongly to empty.
+  EnergyInput e;
+  e.AddCell(1.0, 0.0);
+  e.AddCell(0.0, 0.1);
+  e.AddCell(1.0, 0.0);
+  e.AddPair(CellId(0u), CellId(1u), 1.0);
+  e.AddPair(CellId(1u), CellId(2u), 1.0);
+  std::vector<std::uint8_t> labels = {1, 0, 1};
+  const double before = e.Evaluate(std::span<const std::uint8_t>(labels));
+  EXPECT_EQ(ImproveLabels(e, 5, labels), 1u);
+  EXPECT_EQ(labels, (std::vector<std::uint8_t>{1, 1, 1}));
+  EXPECT_LT(e.Evaluate(std::span<const std::uint8_t>(labels)), before);
+  EXPECT_EQ(ImproveLabels(e, 5, labels), 0u);  // a local minimum stays
+}
+
+}  // namespace
+}  // namespace linesurf::solver
