@@ -10,6 +10,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
@@ -111,6 +112,7 @@ namespace {
 struct CandidateResult {
   bool valid = false;
   std::uint32_t support = 0;
+  double score = 0.0;
   std::int64_t failed_draws = 0;
   Plane3 plane;
 };
@@ -185,27 +187,43 @@ class Detector {
     return pool;
   }
 
-  bool IsInlier(SegmentId s, const Plane3& plane) const {
+  /// Distance of `s` to `plane` under the inlier test that applies to it (textural or
+  /// structural), or a negative value when `s` cannot join `plane`.
+  double InlierDistance(SegmentId s, const Plane3& plane) const {
     const PlaneMembership& m = memberships_[s.index()];
     const Segment3& seg = segments_[s.index()];
-    if (m.count >= 2) return false;
+    if (m.count >= 2) return -1.0;
     if (m.count == 0 || options_.no_structural_condition) {
-      if (m.count == 1 && options_.single_support) return false;
-      return SegmentPlaneDistance(seg, plane, options_.distance) <= epsilon_;
+      if (m.count == 1 && options_.single_support) return -1.0;
+      return SegmentPlaneDistance(seg, plane, options_.distance);
     }
-    if (options_.single_support) return false;
+    if (options_.single_support) return -1.0;
     // Structural condition: a segment already on P' joins P only along the crease P ∩ P'.
     detect::CreaseLine line;
     if (!detect::IntersectPlanes(plane, planes_[m.planes[0].index()].plane, sin_crease_, line)) {
-      return false;
+      return -1.0;
     }
-    return detect::SegmentLineDistance(seg, line, options_.distance) <= epsilon_;
+    return detect::SegmentLineDistance(seg, line, options_.distance);
   }
 
-  std::uint32_t Count(const Plane3& plane) const {
+  bool IsInlier(SegmentId s, const Plane3& plane) const {
+    const double d = InlierDistance(s, plane);
+    return d >= 0.0 && d <= epsilon_;
+  }
+
+  /// Support of a candidate: inlier count and score (count, or the truncated quadratic
+  /// sum of (1 - (d / eps)^2) when options.score_by_residual), summed serially in BVH order.
+  std::pair<std::uint32_t, double> Count(const Plane3& plane) const {
     std::uint32_t count = 0;
-    bvh_.ForEachInSlab(plane, slab_, [&](SegmentId s) { count += IsInlier(s, plane) ? 1 : 0; });
-    return count;
+    double score = 0.0;
+    bvh_.ForEachInSlab(plane, slab_, [&](SegmentId s) {
+      const double d = InlierDistance(s, plane);
+      if (d < 0.0 || d > epsilon_) return;
+      ++count;
+      const double r = d / epsilon_;
+      score += options_.score_by_residual ? 1.0 - r * r : 1.0;
+    });
+    return {count, score};
   }
 
   std::vector<SegmentId> Collect(const Plane3& plane) const {
@@ -269,14 +287,14 @@ class Detector {
       }
       result.valid = true;
       result.plane = *plane;
-      result.support = Count(*plane);
+      std::tie(result.support, result.score) = Count(*plane);
       return result;
     }
     return result;
   }
 
   /// Evaluates candidates [0, count) with `make(k)` in parallel and folds them, in k order, into
-  /// `best` (support, then smallest k).
+  /// `best` (score, then smallest k).
   template <typename Make>
   void EvaluateBatch(std::int64_t first, std::int64_t count, Make&& make,
                      std::optional<CandidateResult>& best, PlaneDetectionStats& stats) const {
@@ -291,7 +309,7 @@ class Detector {
       stats.failed_draws += r.failed_draws;
       if (!r.valid) continue;
       ++stats.candidates_evaluated;
-      if (!best || r.support > best->support) best = r;
+      if (!best || r.score > best->score) best = r;
     }
   }
 
@@ -316,7 +334,7 @@ class Detector {
             }
             r.valid = true;
             r.plane = *plane;
-            r.support = Count(*plane);
+            std::tie(r.support, r.score) = Count(*plane);
             return r;
           },
           best, stats);

@@ -65,6 +65,10 @@ struct PlaneDetectionOptions {
   /// first in a spatial (BVH leaf) order, with probability `near_fraction`; otherwise uniformly.
   std::int32_t near_window = 128;
   double near_fraction = 0.9;
+  /// Rank candidates by the truncated quadratic score sum(1 - (d / eps)^2) over inliers (MSAC)
+  /// instead of the inlier count: prefers planes whose inliers are tight, which keeps slightly
+  /// tilted hybrids of nearby parallel planes from winning.
+  bool score_by_residual = false;
   /// Refit / re-collect rounds per plane (>= 0).
   std::int32_t max_refit_iterations = 10;
   /// Ablation: a segment supports at most one plane (no structural lines).

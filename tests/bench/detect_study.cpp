@@ -1,0 +1,217 @@
+// Studies of docs/plane_detection.md, printed as Markdown tables:
+//   linesurf_detect_study robustness [exhaustive_max=64] [noise_model=ball|gauss] [trials=20]
+//       The paper's robustness toy: the 12 edges of a cube of side 2 (linesurf_synth "cube"),
+//       endpoint noise 0..0.35, 0..50 outliers in a ball of radius 2, eps 0.06, N_iter 100; mean
+//       number of faces found (a face counts if one plane holds its 4 edges), full method and
+//       both ablations.
+//   linesurf_detect_study andalusian PATH [threads=0]
+//       Detection on the Andalusian segments ignoring the given planes (eps 0.02, N_max 160) and
+//       how many of the reference planes are matched (angle < 5 deg, the reference plane's
+//       inliers within 3 eps of ours).
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "engine/detect/detect_planes.h"
+#include "engine/io/reference_json.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "tools/gen/synthesize.h"
+
+namespace linesurf {
+namespace {
+
+/// True planes (of `truth`) whose supporting segments all lie in the inliers of one detected
+/// plane.
+int FacesHeld(const Scene& truth, const PlaneDetectionResult& r) {
+  int found = 0;
+  for (std::size_t p = 0; p < truth.planes.size(); ++p) {
+    std::vector<SegmentId> members;
+    for (std::size_t s = 0; s < truth.memberships.size(); ++s) {
+      if (truth.memberships[SegmentId(s)].Contains(PlaneId(p))) members.emplace_back(s);
+    }
+    bool held = false;
+    for (const PlaneSupport& sp : r.support) {
+      bool all = !members.empty();
+      for (const SegmentId s : members) {
+        all = all && std::binary_search(sp.inliers.begin(), sp.inliers.end(), s);
+      }
+      held = held || all;
+    }
+    found += held ? 1 : 0;
+  }
+  return found;
+}
+
+int Robustness(int exhaustive_max, synth::NoiseModel model, int trials) {
+  const std::vector<double> noises = {0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35};
+  const std::vector<int> outliers = {0, 10, 20, 30, 40, 50};
+  const char* variants[] = {"full", "single_support", "no_structural_condition"};
+  for (int variant = 0; variant < 3; ++variant) {
+    std::printf("\n%s (exhaustive pairs up to %d segments, noise %s, %d trials)\n\n| noise \\ outliers |",
+                variants[variant], exhaustive_max,
+                model == synth::NoiseModel::kUniformBall ? "uniform in ball" : "gaussian", trials);
+    for (int o : outliers) std::printf(" %d |", o);
+    std::printf("\n|---|");
+    for (std::size_t i = 0; i < outliers.size(); ++i) std::printf("---|");
+    std::printf("\n");
+    for (double noise : noises) {
+      std::printf("| %.2f |", noise);
+      for (int o : outliers) {
+        int total = 0;
+        for (int t = 0; t < trials; ++t) {
+          synth::SynthSpec spec;
+          spec.family = "cube";
+          spec.seed = static_cast<std::uint64_t>(1000 + t);
+          spec.noise_sigma = noise;
+          spec.noise_model = model;
+          spec.outlier_count = o;
+          Expected<synth::SyntheticScene> cube = synth::Synthesize(spec);
+          if (!cube) {
+            std::fprintf(stderr, "%s\n", cube.error().ToString().c_str());
+            return 1;
+          }
+          PlaneDetectionOptions options;
+          options.epsilon = 0.06;
+          options.iterations = 100;
+          options.exhaustive_pairs_max_segments = exhaustive_max;
+          options.seed = static_cast<std::uint64_t>(t);
+          options.single_support = variant == 1;
+          options.no_structural_condition = variant == 2;
+          RunContext ctx;
+          ctx.num_threads = 1;
+          Expected<PlaneDetectionResult> r = DetectPlanes(cube->scene, options, ctx);
+          if (!r) {
+            std::fprintf(stderr, "%s\n", r.error().ToString().c_str());
+            return 1;
+          }
+          total += FacesHeld(cube->scene, *r);
+        }
+        std::printf(" %.2f |", static_cast<double>(total) / trials);
+      }
+      std::printf("\n");
+    }
+  }
+  return 0;
+}
+
+int Andalusian(const char* path, int threads, int argc, char** argv) {
+  Expected<Scene> read = io::ReadReferenceJson(path);
+  if (!read) {
+    std::fprintf(stderr, "%s\n", read.error().ToString().c_str());
+    return 1;
+  }
+  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(*read), {});
+  if (!sane) {
+    std::fprintf(stderr, "%s\n", sane.error().ToString().c_str());
+    return 1;
+  }
+  const Scene& scene = sane->scene;
+  PlaneDetectionOptions options;
+  options.epsilon = 0.02;
+  options.max_planes = 160;
+  // Optional overrides for parameter studies: min_iterations confidence near_fraction.
+  if (argc > 4) options.min_iterations = std::atoll(argv[4]);
+  if (argc > 5) options.confidence = std::atof(argv[5]);
+  if (argc > 6) options.near_fraction = std::atof(argv[6]);
+  if (argc > 7) options.max_planes = std::atoi(argv[7]);
+  if (argc > 8) options.min_support = std::atoi(argv[8]);
+  RunContext ctx;
+  ctx.num_threads = threads;
+  Expected<PlaneDetectionResult> r = DetectPlanes(scene, options, ctx);
+  if (!r) {
+    std::fprintf(stderr, "%s\n", r.error().ToString().c_str());
+    return 1;
+  }
+  const PlaneDetectionStats& st = r->stats;
+  std::printf("| segments | %zu |\n|---|---|\n", scene.segments.size());
+  std::printf("| planes before / after fusion | %d / %d (%d merges) |\n", st.planes_before_fusion,
+              st.planes_after_fusion, st.merges);
+  std::printf("| segments on 0 / 1 / 2 planes (L0/L1/L2) | %lld / %lld / %lld |\n",
+              static_cast<long long>(st.num_l0), static_cast<long long>(st.num_l1),
+              static_cast<long long>(st.num_l2));
+  std::printf("| candidates evaluated / failed draws | %lld / %lld |\n",
+              static_cast<long long>(st.candidates_evaluated),
+              static_cast<long long>(st.failed_draws));
+  std::printf("| runtime (s, %d threads) | %.2f (fusion %.3f) |\n", threads, st.seconds,
+              st.seconds_fusion);
+  if (std::getenv("LINESURF_STUDY_VERBOSE") != nullptr) {
+    for (std::size_t p = 0; p < r->planes.size(); ++p) {
+      const Plane3& pl = r->planes[PlaneId(p)];
+      std::fprintf(stderr, "plane %zu: %u inliers, length %.1f, normal %.3f %.3f %.3f offset %.3f\n", p,
+                   r->support[PlaneId(p)].inlier_count, r->support[PlaneId(p)].inlier_length,
+                   pl.normal.x(), pl.normal.y(), pl.normal.z(), pl.Offset());
+    }
+  }
+  // Matching: reference plane q is matched by a detected plane p if their normals are within
+  // 5 degrees and every reference inlier of q (mean endpoint distance) is within 3 eps of p.
+  const double max_angle = 5.0 * std::numbers::pi / 180.0;
+  const double tol = 3.0 * options.epsilon;
+  std::size_t matched = 0;
+  std::size_t matched_95 = 0;  // 95 % of the reference inliers within 3 eps
+  std::size_t reference_planes = 0;
+  for (std::size_t q = 0; q < scene.planes.size(); ++q) {
+    std::vector<SegmentId> members;
+    for (std::size_t s = 0; s < scene.memberships.size(); ++s) {
+      if (scene.memberships[SegmentId(s)].Contains(PlaneId(q))) members.emplace_back(s);
+    }
+    ++reference_planes;
+    const Plane3& ref = scene.planes[PlaneId(q)];
+    double best_fraction = 0.0;  // of the reference inliers within 3 eps of one plane
+    double best_angle_deg = 90.0;
+    for (const Plane3& p : r->planes) {
+      const double angle = std::acos(std::min(1.0, std::abs(p.normal.dot(ref.normal))));
+      if (angle >= max_angle) continue;
+      std::size_t near = 0;
+      for (const SegmentId s : members) {
+        const Segment3& seg = scene.segments[s];
+        const double d =
+            0.5 * (std::abs(p.SignedDistance(seg.p1)) + std::abs(p.SignedDistance(seg.p2)));
+        near += d <= tol ? 1 : 0;
+      }
+      const double fraction = members.empty() ? 0.0 : static_cast<double>(near) / members.size();
+      if (fraction > best_fraction) {
+        best_fraction = fraction;
+        best_angle_deg = angle * 180.0 / std::numbers::pi;
+      }
+    }
+    const bool ok = best_fraction >= 1.0;
+    matched += ok ? 1 : 0;
+    matched_95 += best_fraction >= 0.95 ? 1 : 0;
+    if (!ok && std::getenv("LINESURF_STUDY_VERBOSE") != nullptr) {
+      std::fprintf(stderr, "unmatched reference plane %zu: %zu inliers, best %.3f within 3 eps at %.2f deg\n",
+                   q, members.size(), best_fraction, best_angle_deg);
+    }
+  }
+  std::printf("| reference planes matched | %zu / %zu (%.1f %%) |\n", matched, reference_planes,
+              100.0 * static_cast<double>(matched) / static_cast<double>(reference_planes));
+  std::printf("| ... with 95 %% of the reference inliers within 3 eps | %zu / %zu |\n", matched_95,
+              reference_planes);
+  return 0;
+}
+
+}  // namespace
+}  // namespace linesurf
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "robustness") {
+    const int exhaustive = argc > 2 ? std::atoi(argv[2]) : 64;
+    const linesurf::synth::NoiseModel model =
+        argc > 3 && std::string(argv[3]) == "gauss" ? linesurf::synth::NoiseModel::kGaussian
+                                                    : linesurf::synth::NoiseModel::kUniformBall;
+    const int trials = argc > 4 ? std::atoi(argv[4]) : 20;
+    return linesurf::Robustness(exhaustive, model, trials);
+  }
+  if (mode == "andalusian" && argc > 2) {
+    return linesurf::Andalusian(argv[2], argc > 3 ? std::atoi(argv[3]) : 0, argc, argv);
+  }
+  std::fprintf(stderr,
+               "usage: %s robustness [exhaustive_max] [ball|gauss] [trials] | andalusian PATH "
+               "[threads [min_iterations [confidence [near_fraction [max_planes [min_support]]]]]]\n",
+               argv[0]);
+  return 2;
+}
