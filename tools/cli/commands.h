@@ -6,5 +6,6 @@
 namespace linesurf::cli {
 
 Command AddVersionCommand(CLI::App& app, CommonOptions& common);
+Command AddArrangeCommand(CLI::App& app, CommonOptions& common);
 
 }  // namespace linesurf::cli
