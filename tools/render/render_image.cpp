@@ -164,7 +164,7 @@ void FillTriangle(Canvas& canvas, const Vec3& a, const Vec3& b, const Vec3& c, c
 }
 
 void DrawMesh(Canvas& canvas, const Projector& proj, const PolygonMesh& mesh, int supersample) {
-  const Vec3 light = (-proj.Forward() + 0.6 * proj.Up() + 0.4 * proj.Right()).normalized();
+  const Vec3 light = (-proj.Forward() + 0.5 * proj.Up() - 0.3 * proj.Right()).normalized();
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
     if (face.size() < 3) continue;
@@ -183,7 +183,7 @@ void DrawMesh(Canvas& canvas, const Projector& proj, const PolygonMesh& mesh, in
     centroid /= static_cast<double>(face.size());
     const bool facing = normal.dot(proj.Eye() - centroid) >= 0.0;
     const Colour base = ToColour(facing ? kColourFront : kColourBackFace);
-    const double shade = 0.3 + 0.7 * std::abs(normal.dot(light));
+    const double shade = 0.4 + 0.6 * std::abs(normal.dot(light));
     const Colour colour{base[0] * shade, base[1] * shade, base[2] * shade};
     const Vec3 p0 = proj.Project(mesh.vertices[face[0]]);
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {

@@ -1,0 +1,168 @@
+// `linesurf evaluate RESULT GT`: precision/completeness against a ground-truth mesh, topology.
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/mesh_io.h"
+#include "engine/io/reference_json.h"
+#include "tools/cli/commands.h"
+#include "tools/eval/evaluate_mesh.h"
+
+namespace linesurf::cli {
+namespace {
+
+struct EvaluateArgs {
+  std::string result_path;
+  std::string gt_path;
+  std::string visible_from;
+  std::string json_path;
+  EvaluationOptions options;
+};
+
+nlohmann::json StatsJson(const DistanceStats& s) {
+  return {{"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}};
+}
+
+nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r, double seconds) {
+  const MeshTopology& t = r.topology;
+  return {{"result", args.result_path},
+          {"ground_truth", args.gt_path},
+          {"visible_from", args.visible_from.empty() ? nlohmann::json() : nlohmann::json(args.visible_from)},
+          {"samples_per_mesh", args.options.samples_per_mesh},
+          {"seed", args.options.seed},
+          {"thresholds", r.thresholds},
+          {"precision", r.precision},
+          {"completeness", r.completeness},
+          {"result_to_gt", StatsJson(r.result_to_gt)},
+          {"gt_to_result", StatsJson(r.gt_to_result)},
+          {"num_gt_samples", r.num_gt_samples},
+          {"num_visible_gt_samples", r.num_visible_gt_samples},
+          {"result_area", r.result_area},
+          {"gt_area", r.gt_area},
+          {"topology",
+           {{"closed", t.closed},
+            {"two_manifold", t.two_manifold},
+            {"oriented", t.oriented},
+            {"outward", t.outward},
+            {"self_intersecting", t.self_intersecting},
+            {"num_components", t.num_components},
+            {"num_faces", t.num_faces},
+            {"num_vertices", t.num_vertices},
+            {"num_boundary_edges", t.num_boundary_edges},
+            {"num_non_manifold_edges", t.num_non_manifold_edges},
+            {"num_non_manifold_vertices", t.num_non_manifold_vertices},
+            {"num_degenerate_faces", t.num_degenerate_faces},
+            {"signed_volume", t.signed_volume}}},
+          {"seconds", seconds}};
+}
+
+void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
+  std::printf("result        %s\nground truth  %s\n", args.result_path.c_str(), args.gt_path.c_str());
+  std::printf("samples       %zu per mesh (seed %llu)", args.options.samples_per_mesh,
+              static_cast<unsigned long long>(args.options.seed));
+  if (!args.visible_from.empty()) {
+    std::printf("; completeness over %zu ground-truth samples seen from %s", r.num_visible_gt_samples,
+                args.visible_from.c_str());
+  }
+  std::printf("\n\n  threshold   precision   completeness\n");
+  for (std::size_t i = 0; i < r.thresholds.size(); ++i) {
+    std::printf("  %9.4g   %8.2f %%   %10.2f %%\n", r.thresholds[i], 100.0 * r.precision[i],
+                100.0 * r.completeness[i]);
+  }
+  std::printf("\n  distance            mean      median         p95         max\n");
+  const auto row = [](const char* name, const DistanceStats& s) {
+    std::printf("  %-14s %9.4g   %9.4g   %9.4g   %9.4g\n", name, s.mean, s.median, s.p95, s.max);
+  };
+  row("result -> GT", r.result_to_gt);
+  row("GT -> result", r.gt_to_result);
+  const MeshTopology& t = r.topology;
+  const auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::printf("\nresult mesh: %zu faces, %zu vertices, %zu component(s), area %.6g, volume %.6g\n",
+              t.num_faces, t.num_vertices, t.num_components, r.result_area, t.signed_volume);
+  std::printf("  closed %s (%zu boundary edges), 2-manifold %s (%zu non-manifold edges, %zu vertices),\n"
+              "  oriented %s, outward %s, self-intersecting %s\n",
+              yes(t.closed), t.num_boundary_edges, yes(t.two_manifold), t.num_non_manifold_edges,
+              t.num_non_manifold_vertices, yes(t.oriented), yes(t.outward), yes(t.self_intersecting));
+}
+
+int Run(const CommonOptions& common, const EvaluateArgs& args) {
+  if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
+  RunContext ctx;
+  ConfigureRunContext(common, ctx);
+  const auto start = std::chrono::steady_clock::now();
+  auto result_mesh = io::ReadMesh(args.result_path);
+  if (!result_mesh) return ReportError(result_mesh.error());
+  auto gt_mesh = io::ReadMesh(args.gt_path);
+  if (!gt_mesh) return ReportError(gt_mesh.error());
+  std::optional<std::vector<Vec3>> viewpoints;
+  if (!args.visible_from.empty()) {
+    auto scene = io::ReadReferenceJson(args.visible_from);
+    if (!scene) return ReportError(scene.error());
+    viewpoints.emplace();
+    for (const Vec3& v : scene->viewpoints) viewpoints->push_back(scene->world_from_local.Apply(v));
+    if (viewpoints->empty()) {
+      return ReportError(Error{ErrorCode::kInvalidInput, "evaluate",
+                               args.visible_from + " holds no viewpoints"});
+    }
+  }
+  auto result = EvaluateMesh(*result_mesh, *gt_mesh, args.options, viewpoints, &ctx);
+  if (!result) return ReportError(result.error());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (args.json_path != "-") PrintTable(args, *result);
+  if (!args.json_path.empty()) {
+    const std::string text = ToJson(args, *result, seconds).dump(2) + "\n";
+    if (args.json_path == "-") {
+      std::cout << text;
+    } else {
+      std::ofstream out(args.json_path);
+      out << text;
+      if (!out) {
+        return ReportError(Error{ErrorCode::kInvalidInput, "evaluate", "cannot write " + args.json_path});
+      }
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command AddEvaluateCommand(CLI::App& app, CommonOptions& common) {
+  auto args = std::make_shared<EvaluateArgs>();
+  Command cmd;
+  cmd.app = app.add_subcommand(
+      "evaluate",
+      "Compare a mesh with a ground-truth mesh: precision (share of result samples near the ground "
+      "truth), completeness (share of ground-truth samples near the result), distances and "
+      "topology checks");
+  cmd.app->add_option("RESULT", args->result_path, "Reconstructed mesh (.ply, .obj, .off)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd.app->add_option("GT", args->gt_path, "Ground-truth mesh (.ply, .obj, .off)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd.app
+      ->add_option("--visible-from", args->visible_from,
+                   "Reference JSON whose viewpoints restrict completeness to the ground truth they see")
+      ->check(CLI::ExistingFile);
+  cmd.app->add_option("--thresholds", args->options.thresholds, "Distance thresholds, increasing")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd.app->add_option("--samples", args->options.samples_per_mesh, "Samples per mesh")
+      ->capture_default_str();
+  cmd.app->add_option("--seed", args->options.seed, "Seed of the samples")->capture_default_str();
+  cmd.app->add_option("--json", args->json_path,
+                      "Write the numbers as JSON to this file ('-': to stdout instead of the table)");
+  cmd.run = [&common, args] { return Run(common, *args); };
+  return cmd;
+}
+
+}  // namespace linesurf::cli
