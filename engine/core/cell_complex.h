@@ -45,8 +45,10 @@ struct CellComplex {
   IdVector<VertexId, std::array<ComplexPlaneId, 3>> vertex_planes;  ///< canonical triple, sorted
 
   // Edges: segments between two vertices.
-  IdVector<EdgeId, std::array<VertexId, 2>> edge_vertices;
-  /// Facets around the edge in cyclic (or, on the box boundary, chain) order.
+  IdVector<EdgeId, std::array<VertexId, 2>> edge_vertices;  ///< (lower id, higher id); edges sorted
+  /// Facets around the edge in cyclic (or, on the box boundary, chain) order. Interior edges
+  /// start at their lowest facet id and turn towards that facet's positive cell first; boundary
+  /// edges start at their lower-id box facet and end at the other box facet.
   Csr<EdgeId, FacetId> edge_facets;
   /// Cells around the edge: cell i lies between edge_facets[i] and edge_facets[i+1] (cyclically).
   /// For an edge on the box boundary the chain is open: one fewer cell than facets.
@@ -61,7 +63,9 @@ struct CellComplex {
 
   // Cells.
   Csr<CellId, FacetId> cell_facets;
-  IdVector<CellId, std::int8_t> cell_colour;  ///< +1/-1, adjacent cells differ
+  /// +1/-1, adjacent cells differ: +1 when an even number of non-box planes have the cell on
+  /// their positive side.
+  IdVector<CellId, std::int8_t> cell_colour;
 
   [[nodiscard]] std::size_t NumVertices() const { return vertex_points.size(); }
   [[nodiscard]] std::size_t NumEdges() const { return edge_vertices.size(); }
