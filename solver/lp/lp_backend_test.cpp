@@ -184,6 +184,29 @@ TEST(SolveLabeling, AutoPicksMaxflowOnlyWhenExact) {
   EXPECT_EQ(MustSolve(Chain(), "auto").backend, "maxflow");
   testing::RandomEnergySpec spec;
   EXPECT_EQ(MustSolve(testing::RandomEnergy(spec), "auto").backend, "clp");
+  LabelingOptions options;
+  options.auto_clp_max_columns = 5;
+  const auto large = SolveLabeling(testing::RandomEnergy(spec), options, RunContext{});
+  ASSERT_TRUE(large);
+  EXPECT_EQ(large->backend, "pdhg");
+}
+
+TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 8;
+  const EnergyInput e = testing::GridEnergy(spec);
+  LabelingOptions plain;
+  plain.backend = "clp";
+  plain.local_search_passes = 0;
+  const auto rounded = SolveLabeling(e, plain, RunContext{});
+  LabelingOptions searched = plain;
+  searched.local_search_passes = 10;
+  const auto improved = SolveLabeling(e, searched, RunContext{});
+  ASSERT_TRUE(rounded && improved);
+  EXPECT_EQ(rounded->local_search_flips, 0u);
+  EXPECT_DOUBLE_EQ(improved->rounded_objective, rounded->labels_objective);
+  EXPECT_LE(improved->labels_objective, rounded->labels_objective);
+  EXPECT_GE(improved->labels_objective, improved->relaxed_objective - 1e-9);
 }
 
 TEST(SolveLabeling, RejectsBadOptionsAndInput) {

@@ -4,7 +4,7 @@
 //
 //   linesurf_bench_solver --benchmark_filter='Solve/clp/20'     one backend, one size
 //   BM_CompareWithClp reports, per backend, objective and label differences against Clp.
-// Sizes: n^3 cells with n = 20 (8k), 30 (27k), 58 (195k). Each run is one solve (Iterations(1)):
+// Sizes: n^3 cells with n = 10, 14 (small), 20 (8k), 30 (27k), 58 (195k). Each run is one solve (Iterations(1)):
 // the solves take seconds to minutes, so repetitions are left to --benchmark_repetitions.
 // Local search (10 passes) runs after rounding; rounded_obj is the energy before it.
 
@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <cholmod.h>
+
+#include "solver/energy/build_lp.h"
 #include "solver/lp/lp_backend.h"
 #include "solver/testing/random_energy.h"
 
@@ -105,6 +108,10 @@ void BM_CompareWithClp(benchmark::State& state) {
 // Full energies: clp and pdhg at 8k, 27k, 195k cells; pdhg at 1 and 2 threads.
 BENCHMARK(BM_Solve)
     ->ArgNames({"n", "backend", "threads", "higher_order"})
+    ->Args({10, 0, 1, 1})
+    ->Args({14, 0, 1, 1})
+    ->Args({10, 1, 1, 1})
+    ->Args({14, 1, 1, 1})
     ->Args({20, 0, 1, 1})
     ->Args({30, 0, 1, 1})
     ->Args({58, 0, 1, 1})
@@ -114,6 +121,8 @@ BENCHMARK(BM_Solve)
     ->Args({20, 1, 2, 1})
     ->Args({30, 1, 2, 1})
     ->Args({58, 1, 2, 1})
+    ->Args({10, 2, 1, 1})
+    ->Args({14, 2, 1, 1})
     ->Args({20, 2, 1, 1})
     // Pairwise-only energies, where maxflow is exact.
     ->Args({20, 3, 1, 0})
@@ -126,10 +135,50 @@ BENCHMARK(BM_Solve)
 
 BENCHMARK(BM_CompareWithClp)
     ->ArgNames({"n", "backend", "higher_order"})
+    ->Args({10, 1, 1})
+    ->Args({14, 1, 1})
     ->Args({20, 1, 1})
     ->Args({30, 1, 1})
     ->Args({20, 3, 0})
     ->Args({30, 3, 0})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
+// What a normal-equations interior point (Clp's barrier with CHOLMOD plugged in as its
+// Cholesky) would have to factor: CHOLMOD's symbolic analysis of A A^T for the LP of the grid
+// energy, with CHOLMOD's default ordering choice (AMD, then METIS when AMD's fill is poor).
+void BM_CholmodAnalyze(benchmark::State& state) {
+  const LpModel lp = BuildLpModel(ReduceEnergy(Grid(static_cast<int>(state.range(0)), true)));
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  // A^T in compressed columns is A in compressed rows.
+  cholmod_sparse* at = cholmod_allocate_sparse(lp.NumColumns(), lp.NumRows(), lp.NumNonzeros(),
+                                               1, 1, 0, CHOLMOD_PATTERN, &common);
+  auto* p = static_cast<int*>(at->p);
+  auto* i = static_cast<int*>(at->i);
+  for (std::size_t r = 0; r <= lp.NumRows(); ++r) p[r] = static_cast<int>(lp.row_offsets[r]);
+  for (std::size_t k = 0; k < lp.NumNonzeros(); ++k) i[k] = static_cast<int>(lp.row_columns[k]);
+  cholmod_sparse* a = cholmod_transpose(at, 0, &common);
+  for (auto _ : state) {
+    cholmod_factor* factor = cholmod_analyze(a, &common);  // A unsymmetric: orders A A^T
+    benchmark::DoNotOptimize(factor);
+    state.counters["nnz_L"] = common.method[common.selected].lnz;
+    state.counters["flops_per_factor"] = common.method[common.selected].fl;
+    state.counters["ordering"] = common.method[common.selected].ordering;
+    cholmod_free_factor(&factor, &common);
+  }
+  state.counters["rows"] = static_cast<double>(lp.NumRows());
+  cholmod_free_sparse(&a, &common);
+  cholmod_free_sparse(&at, &common);
+  cholmod_finish(&common);
+}
+BENCHMARK(BM_CholmodAnalyze)
+    ->ArgNames({"n"})
+    ->Arg(14)
+    ->Arg(20)
+    ->Arg(30)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

@@ -68,13 +68,15 @@ struct SparseMatrix {
   std::vector<std::uint32_t> columns;
   std::vector<double> values;
 
-  // out = this * x (each entry a serial sum: deterministic).
-  void Multiply(const std::vector<double>& x, std::vector<double>& out) const {
+  // out = this * x (each entry a serial sum: deterministic); sum += out when given.
+  void Multiply(const std::vector<double>& x, std::vector<double>& out,
+                std::vector<double>* sum = nullptr) const {
     ForChunks(num_rows, [&](std::size_t begin, std::size_t end) {
       for (std::size_t r = begin; r < end; ++r) {
         double s = 0.0;
         for (std::uint32_t k = offsets[r]; k < offsets[r + 1]; ++k) s += values[k] * x[columns[k]];
         out[r] = s;
+        if (sum != nullptr) (*sum)[r] += s;
       }
     });
   }
@@ -320,34 +322,24 @@ class Pdhg {
       ForChunks(n, [&](std::size_t b, std::size_t e) {
         for (std::size_t j = b; j < e; ++j) {
           x_next[j] = std::clamp(x[j] - tau * (s_.cost[j] - aty[j]), s_.col_lower[j], s_.col_upper[j]);
+          x_sum[j] += x_next[j];
         }
       });
-      s_.a.Multiply(x_next, ax_next);
+      s_.a.Multiply(x_next, ax_next, &ax_sum);
       // Dual step on the extrapolated point: v = y - sigma A(2x+ - x),
       // y+ = v + sigma proj_[l,u](-v / sigma).
       ForChunks(m, [&](std::size_t b, std::size_t e) {
         for (std::size_t r = b; r < e; ++r) {
           const double v = y[r] - sigma * (2.0 * ax_next[r] - ax[r]);
           y_next[r] = v + sigma * std::clamp(-v / sigma, s_.row_lower[r], s_.row_upper[r]);
+          y_sum[r] += y_next[r];
         }
       });
       x.swap(x_next);
       y.swap(y_next);
       ax.swap(ax_next);
-      s_.at.Multiply(y, aty);
+      s_.at.Multiply(y, aty, &aty_sum);
       ++since_restart;
-      ForChunks(n, [&](std::size_t b, std::size_t e) {
-        for (std::size_t j = b; j < e; ++j) {
-          x_sum[j] += x[j];
-          aty_sum[j] += aty[j];
-        }
-      });
-      ForChunks(m, [&](std::size_t b, std::size_t e) {
-        for (std::size_t r = b; r < e; ++r) {
-          y_sum[r] += y[r];
-          ax_sum[r] += ax[r];
-        }
-      });
       if (it % kCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
 
       LINESURF_THROW_IF(ctx_.ShouldStop(), kCancelled, kStage, "pdhg cancelled by the host");
