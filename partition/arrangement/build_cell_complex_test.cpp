@@ -290,6 +290,36 @@ TEST(BuildCellComplexes, IdenticalForAnyThreadCount) {
   }
 }
 
+TEST(BuildCellComplex, CancelAndCellLimit) {
+  std::vector<Plane3> planes;
+  for (int k = 0; k < 6; ++k) planes.push_back(MakePlane(Vec3(0.1 * k - 0.25, 0, 0), Vec3(1, 0, 0)));
+  const Box3 box = MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  RunContext cancelled;
+  cancelled.is_cancelled = [] { return true; };
+  auto r = BuildCellComplex(box, planes, {}, cancelled);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::kCancelled);
+  CellComplexOptions options;
+  options.max_cells = 4;
+  r = BuildCellComplex(box, planes, options, RunContext{});
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::kResourceExhausted);
+  options.max_cells = 7;
+  EXPECT_TRUE(BuildCellComplex(box, planes, options, RunContext{}).has_value());
+}
+
+TEST(BuildCellComplex, FarPlaneReferencePointsInLocalFrame) {
+  // Planes given by points 2,000 units away (as in real inputs) still split the local box.
+  std::vector<Plane3> planes{MakePlane(Vec3(2000, 0.2, 0), Vec3(0, 1, 0)),
+                             MakePlane(Vec3(0.3, -2000, 0), Vec3(1, 0, 0)),
+                             MakePlane(Vec3(0, 0, 0.1) + 2000 * Vec3(1, -1, 0).normalized(),
+                                       Vec3(0.1, 0.1, 1).normalized())};
+  const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
+  EXPECT_EQ(r.stats.planes_used, 3u);
+  EXPECT_EQ(r.complex.NumCells(), 8u);
+  ExpectValidWithVolume(r.complex);
+}
+
 TEST(BuildCellComplex, RejectsBadBoxAndOptions) {
   EXPECT_FALSE(BuildCellComplex(Box3{}, {}, {}, RunContext{}).has_value());
   CellComplexOptions options;
