@@ -243,6 +243,28 @@ TEST(BuildCellComplex, NearlyCoincidentAndDegenerateMix) {
   ExpectValidWithVolume(r.complex);
 }
 
+TEST(BuildCellComplex, LatticeOfCoincidentPlanes) {
+  // Few normals and quarter offsets: many duplicates, many planes through shared lines and
+  // points, planes through box edges and corners.
+  const std::array<Vec3, 12> normals{Vec3(1, 0, 0), Vec3(0, 1, 0),  Vec3(0, 0, 1),  Vec3(1, 1, 0),
+                                     Vec3(1, -1, 0), Vec3(1, 0, 1), Vec3(0, 1, -1), Vec3(1, 1, 1),
+                                     Vec3(1, -1, 1), Vec3(-1, 1, 1), Vec3(2, 1, 0), Vec3(1, 2, 3)};
+  for (std::uint64_t trial = 0; trial < 3; ++trial) {
+    Rng rng(9000 + trial);
+    std::vector<Plane3> planes;
+    for (int k = 0; k < 40; ++k) {
+      const Vec3 point(0.25 * (static_cast<double>(rng.Below(7)) - 3.0),
+                       0.25 * (static_cast<double>(rng.Below(7)) - 3.0),
+                       0.25 * (static_cast<double>(rng.Below(7)) - 3.0));
+      planes.push_back(MakePlane(point, normals[rng.Below(normals.size())]));
+    }
+    const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
+    SCOPED_TRACE(trial);
+    EXPECT_GT(r.stats.planes_duplicate, 0u);
+    ExpectValidWithVolume(r.complex);
+  }
+}
+
 void ExpectSameComplex(const CellComplex& a, const CellComplex& b) {
   ASSERT_EQ(a.NumCells(), b.NumCells());
   EXPECT_EQ(a.vertex_planes.raw(), b.vertex_planes.raw());

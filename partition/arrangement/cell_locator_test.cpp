@@ -10,6 +10,7 @@
 #include "engine/core/rng.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
+#include "partition/arrangement/exact_predicates.h"
 
 namespace linesurf::partition {
 namespace {
@@ -60,6 +61,30 @@ CellId BruteForceLocate(const CellLocator& locator, const Vec3& p, std::span<con
       EXPECT_FALSE(found.IsValid()) << "two cells contain the point";
       found = c;
     }
+  }
+  return found;
+}
+
+/// Brute force for a point `mid` of segment ab rounded to doubles: for planes containing the
+/// whole segment the rounded point may fall off the plane, so they take the endpoints' side.
+CellId BruteForceLocateOnSegment(const CellLocator& locator, const Vec3& mid, const Vec3& a,
+                                 const Vec3& b) {
+  const CellComplex& cx = locator.complex();
+  CellId found;
+  for (std::size_t i = 0; i < cx.NumCells(); ++i) {
+    const CellId c(i);
+    bool inside = true;
+    for (const FacetId f : cx.cell_facets[c]) {
+      const ComplexPlaneId plane = cx.facet_plane[f];
+      const Eigen::Vector4d& l = cx.planes[plane].coefficients;
+      const bool contains_segment = ExactSignAtPoint(l, a) == 0 && ExactSignAtPoint(l, b) == 0;
+      const int side = contains_segment ? locator.Side(a, plane) : locator.Side(mid, plane);
+      if (side != (cx.facet_positive_cell[f] == c ? 1 : -1)) {
+        inside = false;
+        break;
+      }
+    }
+    if (inside) found = c;
   }
   return found;
 }
@@ -141,7 +166,7 @@ void CheckWalk(const CellLocator& locator, const Vec3& a, const Vec3& b) {
     c = cx.Neighbour(f, c);
     if (next_t - t > 1e-9) {
       const Vec3 mid = a + 0.5 * (t + next_t) * (b - a);
-      EXPECT_EQ(BruteForceLocate(locator, mid), c);
+      EXPECT_EQ(BruteForceLocateOnSegment(locator, mid, a, b), c);
     }
     last_t = t;
   }
@@ -155,6 +180,38 @@ TEST(CellLocator, WalkSegmentAgreesWithBruteForce) {
   for (int q = 0; q < 10000; ++q) {
     const Vec3 a(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
     const Vec3 b(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    SCOPED_TRACE(q);
+    CheckWalk(locator, a, b);
+    if (HasFatalFailure()) return;
+  }
+}
+
+TEST(CellLocator, LatticeQueriesOnPlanesEdgesAndVertices) {
+  // Planes with few normals at quarter offsets; queries on the eighth grid lie on planes, edges
+  // and vertices all the time.
+  const std::array<Vec3, 6> normals{Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                                    Vec3(1, 1, 0), Vec3(1, -1, 1), Vec3(0, 1, 1)};
+  Rng rng(77);
+  std::vector<Plane3> planes;
+  auto lattice = [&](double step, int half) {
+    return step * (static_cast<double>(rng.Below(2 * half + 1)) - half);
+  };
+  for (int k = 0; k < 24; ++k) {
+    planes.push_back(MakePlane(Vec3(lattice(0.25, 3), lattice(0.25, 3), lattice(0.25, 3)),
+                               normals[rng.Below(normals.size())]));
+  }
+  Box3 box;
+  box.min = Vec3(-1, -1, -1);
+  box.max = Vec3(1, 1, 1);
+  auto built = BuildCellComplex(box, planes, {}, RunContext{});
+  ASSERT_TRUE(built.has_value());
+  const CellLocator locator(built->complex);
+  for (int q = 0; q < 2000; ++q) {
+    const Vec3 a(lattice(0.125, 7), lattice(0.125, 7), lattice(0.125, 7));
+    const Vec3 b(lattice(0.125, 7), lattice(0.125, 7), lattice(0.125, 7));
+    const std::array<Vec3, 1> towards_b{b - a};
+    const CellId c = locator.Locate(a, towards_b);
+    ASSERT_EQ(c, BruteForceLocate(locator, a, towards_b));
     SCOPED_TRACE(q);
     CheckWalk(locator, a, b);
     if (HasFatalFailure()) return;
