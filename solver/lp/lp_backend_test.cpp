@@ -13,6 +13,10 @@ namespace linesurf::solver {
 namespace {
 
 constexpr double kObjectiveTolerance = 1e-6;
+// Exact arithmetic on small sums of given costs.
+constexpr double kExact = 1e-9;
+// Relative agreement of pdhg (tolerance 1e-4) with Clp's optimum.
+constexpr double kPdhgAgreement = 1e-3;
 
 LabelingResult MustSolve(const EnergyInput& e, const std::string& backend, int threads = 1) {
   LabelingOptions options;
@@ -64,8 +68,8 @@ class EveryBackend : public ::testing::TestWithParam<std::string> {};
 TEST_P(EveryBackend, ChainGivesTheMinCut) {
   const LabelingResult r = MustSolve(Chain(), GetParam());
   EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0}));
-  EXPECT_NEAR(r.labels_objective, 2.4, 1e-9);
-  EXPECT_NEAR(r.relaxed_objective, 2.4, 1e-3);
+  EXPECT_NEAR(r.labels_objective, 2.4, kExact);
+  EXPECT_NEAR(r.relaxed_objective, 2.4, kPdhgAgreement);
 }
 
 TEST_P(EveryBackend, FixedCellsAreRespected) {
@@ -76,7 +80,7 @@ TEST_P(EveryBackend, FixedCellsAreRespected) {
   EXPECT_EQ(r.labels[0], 1);
   EXPECT_EQ(r.labels[2], 0);
   EXPECT_EQ(r.labels[5], 0);
-  EXPECT_NEAR(r.labels_objective, BruteForceMinimum(e), 1e-9);
+  EXPECT_NEAR(r.labels_objective, BruteForceMinimum(e), kExact);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solver, EveryBackend, ::testing::Values("clp", "maxflow", "pdhg", "auto"));
@@ -94,7 +98,7 @@ TEST_P(LpBackends, StructuralGroupForcesOneCellFull) {
   e.AddStructuralGroup(group, 1.0);
   const LabelingResult r = MustSolve(e, GetParam());
   EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 0}));
-  EXPECT_NEAR(r.labels_objective, 0.1, 1e-9);
+  EXPECT_NEAR(r.labels_objective, 0.1, kExact);
 }
 
 TEST_P(LpBackends, ParityTermPrefersAFlatSurface) {
@@ -112,7 +116,7 @@ TEST_P(LpBackends, ParityTermPrefersAFlatSurface) {
   e.AddParityGroup(cells, nu, 1.0);
   const LabelingResult flat = MustSolve(e, GetParam());
   EXPECT_EQ(flat.labels, (std::vector<std::uint8_t>{1, 1, 0, 0}));
-  EXPECT_NEAR(flat.labels_objective, 0.4, 1e-9);
+  EXPECT_NEAR(flat.labels_objective, 0.4, kExact);
   e.parity_weights[0] = 0.1;  // now the evidence wins: crease costs 0.1 < 0.4
   const LabelingResult crease = MustSolve(e, GetParam());
   EXPECT_EQ(crease.labels, (std::vector<std::uint8_t>{1, 1, 1, 0}));
@@ -134,13 +138,13 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
     const LabelingResult other = MustSolve(e, GetParam());
     // The relaxation bounds the integral optimum from below.
     EXPECT_LE(clp.relaxed_objective, best + kObjectiveTolerance);
-    EXPECT_NEAR(other.relaxed_objective, clp.relaxed_objective, 1e-3 * (1.0 + clp.relaxed_objective))
+    EXPECT_NEAR(other.relaxed_objective, clp.relaxed_objective, kPdhgAgreement * (1.0 + clp.relaxed_objective))
         << "seed " << seed;
     if (clp.fractional_cells == 0) {
       ++integral;
       // An integral LP optimum is an integral optimum; labels must agree where it is unique.
       EXPECT_NEAR(clp.labels_objective, best, kObjectiveTolerance) << "seed " << seed;
-      EXPECT_NEAR(other.labels_objective, clp.labels_objective, 1e-6) << "seed " << seed;
+      EXPECT_NEAR(other.labels_objective, clp.labels_objective, kObjectiveTolerance) << "seed " << seed;
     }
   }
   EXPECT_GT(integral, 5);
@@ -206,7 +210,7 @@ TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
   EXPECT_EQ(rounded->local_search_flips, 0u);
   EXPECT_DOUBLE_EQ(improved->rounded_objective, rounded->labels_objective);
   EXPECT_LE(improved->labels_objective, rounded->labels_objective);
-  EXPECT_GE(improved->labels_objective, improved->relaxed_objective - 1e-9);
+  EXPECT_GE(improved->labels_objective, improved->relaxed_objective - kExact);
 }
 
 TEST(SolveLabeling, RejectsBadOptionsAndInput) {
@@ -268,8 +272,8 @@ TEST(SolveLabeling, PdhgIsCloseToClpOnAGridEnergy) {
   const EnergyInput e = testing::GridEnergy(spec);
   const LabelingResult clp = MustSolve(e, "clp");
   const LabelingResult pdhg = MustSolve(e, "pdhg");
-  EXPECT_NEAR(pdhg.relaxed_objective, clp.relaxed_objective, 1e-3 * clp.relaxed_objective);
-  EXPECT_GE(pdhg.relaxed_objective, clp.relaxed_objective - 1e-6);
+  EXPECT_NEAR(pdhg.relaxed_objective, clp.relaxed_objective, kPdhgAgreement * clp.relaxed_objective);
+  EXPECT_GE(pdhg.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
 }
 
 }  // namespace
