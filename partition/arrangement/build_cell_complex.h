@@ -60,7 +60,8 @@ struct CellComplexResult {
     std::span<const Box3> boxes, std::span<const Plane3> planes, const CellComplexOptions& options,
     const RunContext& ctx) noexcept;
 
-/// As above with its own plane list per box: planes_per_box[b] splits boxes[b].
+/// As above with its own plane list per box: planes_per_box[b] splits boxes[b], and
+/// ComplexPlane::source of results[b] indexes planes_per_box[b].
 [[nodiscard]] Expected<std::vector<CellComplexResult>> BuildCellComplexes(
     std::span<const Box3> boxes, std::span<const std::vector<Plane3>> planes_per_box,
     const CellComplexOptions& options, const RunContext& ctx) noexcept;
