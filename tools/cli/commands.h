@@ -6,6 +6,7 @@
 namespace linesurf::cli {
 
 Command AddVersionCommand(CLI::App& app, CommonOptions& common);
+Command AddSynthCommand(CLI::App& app, CommonOptions& common);
 Command AddEvaluateCommand(CLI::App& app, CommonOptions& common);
 Command AddRenderCommand(CLI::App& app, CommonOptions& common);
 Command AddArrangeCommand(CLI::App& app, CommonOptions& common);

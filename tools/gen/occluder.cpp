@@ -127,7 +127,8 @@ bool Occluder::HitsGroup(const Group& g, const Vec3& eye, const Vec3& dir, doubl
   return false;
 }
 
-bool Occluder::IsClear(const Vec3& eye, const Vec3& target) const {
+bool Occluder::IsClear(const Vec3& eye, const Vec3& target,
+                       std::vector<std::uint32_t>& scratch) const {
   if (groups_.empty()) return true;
   const Vec3 dir = target - eye;
   const double length = dir.norm();
@@ -141,7 +142,8 @@ bool Occluder::IsClear(const Vec3& eye, const Vec3& target) const {
   const std::int64_t i1 = cell_of(std::max(eye.x(), target.x()), origin_x_, nx_);
   const std::int64_t j0 = cell_of(std::min(eye.y(), target.y()), origin_y_, ny_);
   const std::int64_t j1 = cell_of(std::max(eye.y(), target.y()), origin_y_, ny_);
-  std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t>& candidates = scratch;
+  candidates.clear();
   for (std::int64_t j = j0; j <= j1; ++j) {
     for (std::int64_t i = i0; i <= i1; ++i) {
       const auto c = static_cast<std::size_t>(i + nx_ * j);

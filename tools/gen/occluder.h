@@ -17,8 +17,10 @@ class Occluder {
 
   /// True when no face crosses the sight ray from `eye` to `target` before the target (a
   /// crossing within kTargetGap of the target does not count: targets lie on faces).
-  /// Thread-safe (const, no caches).
-  [[nodiscard]] bool IsClear(const Vec3& eye, const Vec3& target) const;
+  /// `scratch` is a caller-owned buffer reused across calls (no allocation per ray).
+  /// Thread-safe (const, no caches) when each thread passes its own scratch.
+  [[nodiscard]] bool IsClear(const Vec3& eye, const Vec3& target,
+                             std::vector<std::uint32_t>& scratch) const;
 
  private:
   struct Triangle {

@@ -159,6 +159,7 @@ SyntheticScene Build(const SynthSpec& spec) {
       tbb::blocked_range<std::size_t>(0, pieces.size(), kVisibilityGrain),
       [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<std::pair<double, std::uint32_t>> near;
+        std::vector<std::uint32_t> scratch;
         for (std::size_t pi = range.begin(); pi != range.end(); ++pi) {
           const Piece& piece = pieces[pi];
           const TrueLine& line = lines[piece.line];
@@ -178,7 +179,7 @@ SyntheticScene Build(const SynthSpec& spec) {
             bool clear = true;
             for (double s : kSampleParams) {
               const Vec3 target = piece.segment.p1 + s * (piece.segment.p2 - piece.segment.p1);
-              if (!occluder.IsClear(eye, target)) {
+              if (!occluder.IsClear(eye, target, scratch)) {
                 clear = false;
                 break;
               }
