@@ -10,5 +10,6 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common);
 Command AddEvaluateCommand(CLI::App& app, CommonOptions& common);
 Command AddRenderCommand(CLI::App& app, CommonOptions& common);
 Command AddArrangeCommand(CLI::App& app, CommonOptions& common);
+Command AddReconstructCommand(CLI::App& app, CommonOptions& common);
 
 }  // namespace linesurf::cli

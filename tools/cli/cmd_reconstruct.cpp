@@ -1,0 +1,194 @@
+// `linesurf reconstruct INPUT -o MESH.{ply,obj,off}`: the whole method (docs/reconstruction.md).
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/io/mesh_io.h"
+#include "engine/io/read_scene.h"
+#include "engine/pipeline/reconstruct.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/detection_options.h"
+
+namespace linesurf::cli {
+namespace {
+
+struct ReconstructArgs {
+  std::string input;
+  std::string output;
+  std::string report;
+  std::string planes = "detect";
+  std::string scene = "auto";
+  std::optional<double> relative_epsilon;
+  std::optional<double> sigma;
+  bool ascii = false;
+  pipeline::ReconstructOptions options;
+};
+
+nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::ReconstructResult& r) {
+  const pipeline::RunStats& s = r.stats;
+  const pipeline::EnergyOptions& e = args.options.energy;
+  nlohmann::json j;
+  j["input"] = args.input;
+  j["output"] = args.output;
+  j["options"] = {{"planes", args.planes},
+                  {"scene", args.scene},
+                  {"seed", args.options.seed},
+                  {"threads", args.options.num_threads},
+                  {"solver", args.options.solver.backend},
+                  {"box_margin", args.options.box_margin},
+                  {"w_textural", e.textural_weight},
+                  {"w_structural", e.structural_weight},
+                  {"w_visibility", e.visibility_weight},
+                  {"w_edge", e.edge_weight},
+                  {"w_corner", e.corner_weight},
+                  {"w_area", e.area_weight},
+                  {"w_prior", e.viewpoint_prior_weight},
+                  {"samples_per_sigma", e.samples_per_sigma},
+                  {"structural_as_textural", e.structural_as_textural}};
+  nlohmann::json stages = nlohmann::json::object();
+  for (const auto& [name, seconds] : s.stage_seconds) stages[name] = seconds;
+  j["stage_seconds"] = stages;
+  j["total_seconds"] = s.total_seconds;
+  j["counts"] = {{"input_segments", s.input_segments},
+                 {"segments", s.segments},
+                 {"viewpoints", s.viewpoints},
+                 {"observations", s.observations},
+                 {"planes", s.planes},
+                 {"segments_with_0_planes", s.segments_with_planes[0]},
+                 {"segments_with_1_plane", s.segments_with_planes[1]},
+                 {"segments_with_2_planes", s.segments_with_planes[2]},
+                 {"planes_in_complex", s.planes_in_complex},
+                 {"cells", s.cells},
+                 {"facets", s.facets},
+                 {"edges", s.edges},
+                 {"vertices", s.vertices},
+                 {"pair_terms", s.pair_terms},
+                 {"structural_groups", s.structural_groups},
+                 {"parity_groups", s.parity_groups},
+                 {"fixed_cells", s.fixed_cells},
+                 {"full_cells", s.full_cells},
+                 {"lp_variables", s.lp_variables},
+                 {"lp_constraints", s.lp_constraints},
+                 {"lp_nonzeros", s.lp_nonzeros}};
+  j["scene_mode"] = s.scene_mode;
+  j["scene_mode_reason"] = s.scene_mode_reason;
+  j["sigma"] = s.sigma;
+  j["solver"] = {{"backend", s.solver_backend},
+                 {"status", s.solver_status},
+                 {"objective", s.objective},
+                 {"relaxed_objective", s.relaxed_objective},
+                 {"fractional_cells", s.fractional_cells}};
+  j["mesh"] = {{"vertices", s.mesh_vertices}, {"faces", s.mesh_faces},
+               {"closed", s.mesh_closed},     {"manifold", s.mesh_manifold},
+               {"volume", s.mesh_volume},     {"split_vertices", s.split_vertices}};
+  j["peak_memory_bytes"] = s.peak_memory_bytes;
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
+  Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
+  if (!read) return ReportError(read.error());
+  for (const std::string& w : read->warnings) PrintWarning(common, w);
+
+  pipeline::ReconstructOptions& options = args.options;
+  options.use_given_planes = args.planes == "given";
+  options.planes.relative_epsilon = args.relative_epsilon;
+  options.energy.sigma = args.sigma;
+  options.num_threads = common.threads;
+  static const std::map<std::string, pipeline::SceneMode> kModes{
+      {"exterior", pipeline::SceneMode::kExterior},
+      {"interior", pipeline::SceneMode::kInterior},
+      {"auto", pipeline::SceneMode::kAuto}};
+  options.scene_mode = kModes.at(args.scene);
+
+  RunContext ctx;
+  ConfigureRunContext(common, ctx);
+  Expected<pipeline::ReconstructResult> result =
+      pipeline::Reconstruct(read->scene, options, ctx);
+  if (!result) return ReportError(result.error());
+  for (const std::string& w : result->warnings) PrintWarning(common, w);
+
+  io::MeshWriteOptions write;
+  write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
+  if (Status s = io::WriteMesh(result->mesh, args.output, write); !s) return ReportError(s.error());
+  if (!args.report.empty()) {
+    std::ofstream out(args.report);
+    out << ReportJson(args, *result).dump(2) << "\n";
+    out.close();
+    if (!out) {
+      return ReportError(
+          Error{ErrorCode::kInvalidInput, "reconstruct", "cannot write report " + args.report});
+    }
+  }
+  const pipeline::RunStats& s = result->stats;
+  if (!common.quiet) {
+    std::fprintf(stderr,
+                 "reconstruct: %zu segments, %zu planes, %s scene; %zu cells, LP %zu x %zu (%s, "
+                 "%s); mesh %zu vertices, %zu faces, %s, %s; %.2f s\n",
+                 s.segments, s.planes, s.scene_mode.c_str(), s.cells, s.lp_variables,
+                 s.lp_constraints, s.solver_backend.c_str(), s.solver_status.c_str(),
+                 s.mesh_vertices, s.mesh_faces, s.mesh_closed ? "closed" : "NOT closed",
+                 s.mesh_manifold ? "2-manifold" : "NOT 2-manifold", s.total_seconds);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
+  auto args = std::make_shared<ReconstructArgs>();
+  pipeline::ReconstructOptions& o = args->options;
+  pipeline::EnergyOptions& e = o.energy;
+  Command cmd;
+  cmd.app = app.add_subcommand(
+      "reconstruct", "Reconstruct a closed piecewise-planar mesh from 3D line segments");
+  CLI::App* sub = cmd.app;
+  sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
+  sub->add_option("--planes", args->planes, "Planes: detect them, or use the input's (given)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"detect", "given"}));
+  sub->add_option("--scene", args->scene,
+                  "Boundary: exterior (box cells empty), interior (full) or auto")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"exterior", "interior", "auto"}));
+  sub->add_option("--w-textural", e.textural_weight, "Textural weight")->capture_default_str();
+  sub->add_option("--w-structural", e.structural_weight, "Structural weight")
+      ->capture_default_str();
+  sub->add_option("--w-visibility", e.visibility_weight, "Visibility weight")
+      ->capture_default_str();
+  sub->add_option("--w-edge", e.edge_weight, "Edge regularisation weight")->capture_default_str();
+  sub->add_option("--w-corner", e.corner_weight, "Corner regularisation weight")
+      ->capture_default_str();
+  sub->add_option("--w-area", e.area_weight, "Area weight")->capture_default_str();
+  sub->add_option("--w-prior", e.viewpoint_prior_weight, "Viewpoint prior weight")
+      ->capture_default_str();
+  sub->add_option("--sigma", args->sigma, "Scale sigma, scene units (default: median length)");
+  sub->add_option("--samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment")
+      ->capture_default_str();
+  sub->add_flag("--structural-as-textural", e.structural_as_textural,
+                "Ablation: structural segments count as two textural ones");
+  sub->add_option("--solver", o.solver.backend, "LP backend: clp, maxflow, pdhg or auto")
+      ->capture_default_str();
+  sub->add_option("--time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)")
+      ->capture_default_str();
+  sub->add_option("--box-margin", o.box_margin, "Box margin, fraction of the extent per side")
+      ->capture_default_str();
+  sub->add_option("--seed", o.seed, "Random seed")->capture_default_str();
+  sub->add_option("--report", args->report, "Write the run report (JSON) here");
+  sub->add_flag("--ascii", args->ascii, "ASCII PLY");
+  sub->add_flag("--triangulate", o.triangulate, "Triangles instead of convex polygons");
+  AddDetectionOptions(*sub, o.planes, args->relative_epsilon);
+  cmd.run = [&common, args] { return RunReconstruct(common, *args); };
+  return cmd;
+}
+
+}  // namespace linesurf::cli

@@ -1,0 +1,22 @@
+#include "tools/cli/detection_options.h"
+
+namespace linesurf::cli {
+
+void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
+                         std::optional<double>& relative_epsilon) {
+  sub.add_option("--epsilon", options.epsilon, "Inlier tolerance eps, scene units")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--relative-epsilon", relative_epsilon,
+                 "eps as a fraction of the scene diagonal (overrides --epsilon)");
+  sub.add_option("--iterations", options.iterations, "Max candidate pairs per plane")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--max-planes", options.max_planes, "Max number of planes")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub.add_option("--min-support", options.min_support, "Min inlier segments per plane")
+      ->capture_default_str();
+}
+
+}  // namespace linesurf::cli

@@ -1,0 +1,17 @@
+#pragma once
+// The plane-detection flags shared by `detect` and `reconstruct` (one definition, no copies).
+
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "engine/detect/detect_planes.h"
+
+namespace linesurf::cli {
+
+/// Adds --epsilon, --relative-epsilon, --iterations, --max-planes and --min-support, writing into
+/// `options` and `relative_epsilon` (copy the latter into options.relative_epsilon after parsing).
+void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
+                         std::optional<double>& relative_epsilon);
+
+}  // namespace linesurf::cli
