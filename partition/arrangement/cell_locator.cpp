@@ -74,9 +74,16 @@ CellId CellLocator::Locate(const Vec3& p, std::span<const Vec3> tie_directions, 
 void CellLocator::WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to, CellId to_cell,
                               const SegmentVisitor& visit) const {
   LINESURF_ASSERT(from_cell.IsValid() && to_cell.IsValid());
+  // The side of to_cell for each plane: from the point `to` when it lies strictly off the plane
+  // (cheap), else from the cell's vertices. Should `to` not lie in to_cell after all, a second
+  // phase uses the cell's vertices only, so the walk still ends in to_cell.
   std::vector<std::int8_t> side(complex_.planes.size(), 0);
+  bool cell_sides_only = false;
   auto target = [&](ComplexPlaneId plane) {
     std::int8_t& s = side[plane.index()];
+    if (s == 0 && !cell_sides_only) {
+      s = static_cast<std::int8_t>(ExactSignAtPoint(complex_.planes[plane].coefficients, to));
+    }
     if (s == 0) s = static_cast<std::int8_t>(CellPlaneSide(to_cell, plane));
     return s;
   };
@@ -89,7 +96,7 @@ void CellLocator::WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to
   };
   CellId c = from_cell;
   double last_t = 0.0;
-  for (std::size_t step = 0; step <= complex_.planes.size(); ++step) {
+  for (std::size_t step = 0; step <= 2 * complex_.planes.size(); ++step) {
     FacetId best;
     double best_t = std::numeric_limits<double>::infinity();
     for (const FacetId f : complex_.cell_facets[c]) {
@@ -102,8 +109,11 @@ void CellLocator::WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to
       }
     }
     if (!best.IsValid()) {
-      LINESURF_ASSERT(c == to_cell);
-      return;
+      if (c == to_cell) return;
+      LINESURF_ASSERT(!cell_sides_only);
+      cell_sides_only = true;
+      std::fill(side.begin(), side.end(), std::int8_t{0});
+      continue;
     }
     last_t = std::max(last_t, best_t);  // crossings are reported in non-decreasing t
     if (visit) visit(best, last_t);

@@ -41,7 +41,8 @@ class CellLocator {
   /// Walks the straight segment from `from` (in from_cell) to `to` (in to_cell), calling `visit`
   /// for every facet crossed, in order of t. The walk crosses only planes that separate
   /// from_cell and to_cell, each exactly once, so it always terminates (at most one step per
-  /// plane) and always ends in to_cell. Crossing order uses double parameters; ties (the
+  /// plane; twice that if `to` does not lie in the closure of to_cell) and always ends in
+  /// to_cell. Crossing order uses double parameters; ties (the
   /// segment through an edge or a vertex) are broken by the smaller plane id among the planes
   /// the current cell can cross. Both cells must be valid.
   void WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to, CellId to_cell,

@@ -232,6 +232,12 @@ TEST(CellLocator, WalkSegmentThroughEdgesAndVertices) {
   std::size_t steps = 0;
   locator.WalkSegment(a, ca, b, cb, [&](FacetId, double) { ++steps; });
   EXPECT_LE(steps, cx.planes.size());
+  // A target cell that does not contain `to`: the walk still ends there.
+  const CellId elsewhere = locator.Locate(Vec3(0.9, 0.9, 0.9));
+  ASSERT_NE(elsewhere, cb);
+  CellId c = ca;
+  locator.WalkSegment(a, ca, b, elsewhere, [&](FacetId f, double) { c = cx.Neighbour(f, c); });
+  EXPECT_EQ(c, elsewhere);
 }
 
 }  // namespace
