@@ -14,11 +14,14 @@
 ///               tolerance pdhg_tolerance), fast on large complexes.
 ///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
 ///               else "pdhg" (see docs/design/lp_backend.md for the measurements).
+///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
 ///
-/// Rounding (then optional local search, LabelingOptions::local_search_passes): label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
+/// Rounding: label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
 /// Ties (|x_c - 0.5| <= kTieTolerance) are decided one by one in increasing CellId order: each
 /// takes the label of lower energy given the labels decided so far (undecided ties count as
-/// empty); on equal energy the cell is empty. Fixed cells keep their label.
+/// empty); on equal energy the cell is empty. Fixed cells keep their label. Then local search
+/// (LabelingOptions::local_search_passes, on by default) flips single free cells in id order
+/// while that lowers the energy.
 
 #include <cstdint>
 #include <string>
