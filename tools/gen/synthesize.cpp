@@ -20,7 +20,7 @@ const char* const kStage = "synthesize";
 /// sine of the viewing angle (grazing views are not reconstructed by real pipelines).
 constexpr double kMinViewSine = 0.05;
 /// Sample points along a piece that must all be visible (ends inset so they stay on the edge).
-constexpr double kSampleParams[] = {0.02, 0.5, 0.98};
+constexpr double kSampleParams[] = {0.5, 0.02, 0.98};
 /// At most this many candidate viewpoints (nearest first) are ray-tested per piece.
 constexpr std::size_t kMaxTestedViewpoints = 64;
 /// Grain of the parallel visibility loop (pieces per task); results do not depend on it.
@@ -52,13 +52,14 @@ class ViewpointIndex {
       buckets_[CellOf(viewpoints[i])].push_back(i);
     }
   }
-  /// Viewpoints within the max distance of `p`, nearest first (ties by id).
-  void Near(const Vec3& p, std::vector<std::pair<double, std::uint32_t>>& out) const {
+  /// Viewpoints within the max distance of `p` that pass `keep`, nearest first (ties by id).
+  template <typename Keep>
+  void Near(const Vec3& p, std::vector<std::pair<double, std::uint32_t>>& out, Keep&& keep) const {
     out.clear();
     const double max2 = max_distance_ * max_distance_;
     const auto consider = [&](std::uint32_t i) {
       const double d2 = (viewpoints_[i] - p).squaredNorm();
-      if (d2 <= max2) out.emplace_back(d2, i);
+      if (d2 <= max2 && keep(viewpoints_[i])) out.emplace_back(d2, i);
     };
     if (!std::isfinite(max_distance_)) {
       for (std::uint32_t i = 0; i < viewpoints_.size(); ++i) consider(i);
@@ -73,6 +74,9 @@ class ViewpointIndex {
       }
     }
     std::sort(out.begin(), out.end());
+  }
+  void Near(const Vec3& p, std::vector<std::pair<double, std::uint32_t>>& out) const {
+    Near(p, out, [](const Vec3&) { return true; });
   }
 
  private:
@@ -164,17 +168,18 @@ SyntheticScene Build(const SynthSpec& spec) {
           const Piece& piece = pieces[pi];
           const TrueLine& line = lines[piece.line];
           const Vec3 mid = piece.segment.Midpoint();
-          index.Near(mid, near);
+          // Only viewpoints in front of one of the line's faces, at a non-grazing angle.
+          index.Near(mid, near, [&](const Vec3& eye) {
+            const Vec3 to_eye = eye - mid;
+            for (std::uint8_t k = 0; k < line.planes.count; ++k) {
+              if (line.outward[k].dot(to_eye) > kMinViewSine * to_eye.norm()) return true;
+            }
+            return false;
+          });
           std::size_t tested = 0;
           for (const auto& [d2, vi] : near) {
             if (views[pi].size() >= static_cast<std::size_t>(spec.max_views)) break;
             const Vec3& eye = layout.viewpoints[vi];
-            const Vec3 to_eye = eye - mid;
-            bool in_front = false;
-            for (std::uint8_t k = 0; k < line.planes.count; ++k) {
-              in_front = in_front || line.outward[k].dot(to_eye) > kMinViewSine * to_eye.norm();
-            }
-            if (!in_front) continue;
             if (++tested > kMaxTestedViewpoints) break;
             bool clear = true;
             for (double s : kSampleParams) {
