@@ -23,7 +23,11 @@ std::optional<std::filesystem::path> AndalusianInput() {
 
 std::filesystem::path BinDir() {
   const char* dir = std::getenv("LINESURF_BIN_DIR");
-  return dir != nullptr ? std::filesystem::path(dir) : std::filesystem::current_path();
+  if (dir != nullptr) return std::filesystem::path(dir);
+  // Test executables are built into the same bin/ directory as linesurf.
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::current_path() : self.parent_path();
 }
 
 std::filesystem::path FreshTempDir() {

@@ -10,7 +10,8 @@ namespace linesurf::testing {
 std::optional<std::filesystem::path> SharedDir();
 /// The Andalusian input JSON, if ../shared is present.
 std::optional<std::filesystem::path> AndalusianInput();
-/// The directory holding the built linesurf executable (LINESURF_BIN_DIR).
+/// The directory holding the built linesurf executable (LINESURF_BIN_DIR, else the directory
+/// of the running test executable: both are built into bin/).
 std::filesystem::path BinDir();
 /// A fresh, empty temporary directory unique to the running test.
 std::filesystem::path FreshTempDir();
