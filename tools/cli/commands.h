@@ -6,6 +6,8 @@
 namespace linesurf::cli {
 
 Command AddVersionCommand(CLI::App& app, CommonOptions& common);
+Command AddInfoCommand(CLI::App& app, CommonOptions& common);
+Command AddConvertCommand(CLI::App& app, CommonOptions& common);
 Command AddSynthCommand(CLI::App& app, CommonOptions& common);
 Command AddEvaluateCommand(CLI::App& app, CommonOptions& common);
 Command AddRenderCommand(CLI::App& app, CommonOptions& common);

@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
 
   std::vector<Command> commands;
   commands.push_back(AddVersionCommand(app, common));
+  commands.push_back(AddInfoCommand(app, common));
+  commands.push_back(AddConvertCommand(app, common));
   commands.push_back(AddSynthCommand(app, common));
   commands.push_back(AddEvaluateCommand(app, common));
   commands.push_back(AddRenderCommand(app, common));

@@ -1,0 +1,74 @@
+// `linesurf convert INPUT -o OUTPUT`: any input scene format to reference JSON.
+
+#include <iostream>
+#include <string>
+
+#include "engine/io/mesh_format.h"
+#include "engine/io/read_scene.h"
+#include "engine/io/reference_json.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "tools/cli/commands.h"
+
+namespace linesurf::cli {
+namespace {
+
+struct ConvertArgs {
+  std::string input;
+  std::string output;
+  std::string nvm;
+  std::string colmap;
+  bool sanitize = false;
+};
+
+}  // namespace
+
+Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
+  auto args = std::make_shared<ConvertArgs>();
+  Command cmd;
+  cmd.app = app.add_subcommand(
+      "convert",
+      "Convert a scene (reference JSON, Line3D++ .txt + NVM/COLMAP, OBJ lines) to reference JSON, "
+      "keeping every value");
+  cmd.app->add_option("INPUT", args->input,
+                      "Scene file: .json (reference JSON), .txt (Line3D++), .obj (v/l lines)")
+      ->required();
+  cmd.app->add_option("-o,--output", args->output, "Output reference JSON file (.json)")
+      ->required();
+  auto* nvm = cmd.app->add_option("--nvm", args->nvm, "Line3D++ input: VisualSfM .nvm with the cameras");
+  cmd.app->add_option("--colmap", args->colmap,
+                      "Line3D++ input: COLMAP text model directory (images.txt)")
+      ->excludes(nvm);
+  cmd.app->add_flag("--sanitize", args->sanitize,
+                    "Drop/fix bad elements first (as before a reconstruction); default: convert "
+                    "values exactly as read");
+  cmd.run = [args, &common]() -> int {
+    if (io::LowerExtension(args->output) != ".json") {
+      return ReportError(Error{ErrorCode::kInvalidOptions, "convert",
+                               args->output + ": the output must be a reference JSON (.json) file"});
+    }
+    io::SceneReadOptions read_options;
+    read_options.nvm = args->nvm;
+    read_options.colmap = args->colmap;
+    auto read = io::ReadSceneWithWarnings(args->input, read_options);
+    if (!read) return ReportError(read.error());
+    for (const std::string& w : read->warnings) PrintWarning(common, args->input + ": " + w);
+    Scene scene = std::move(read->scene);
+    if (args->sanitize) {
+      auto sanitized = pipeline::SanitizeScene(std::move(scene), pipeline::SanitizeOptions{});
+      if (!sanitized) return ReportError(sanitized.error());
+      for (const std::string& w : sanitized->warnings) PrintWarning(common, "sanitation: " + w);
+      scene = std::move(sanitized->scene);
+    }
+    const Status written = io::WriteReferenceJson(scene, args->output);
+    if (!written) return ReportError(written.error());
+    if (!common.quiet) {
+      std::cerr << "linesurf: wrote " << args->output << " (" << scene.NumSegments()
+                << " segments, " << scene.viewpoints.size() << " viewpoints, "
+                << scene.planes.size() << " planes)\n";
+    }
+    return kExitOk;
+  };
+  return cmd;
+}
+
+}  // namespace linesurf::cli

@@ -1,0 +1,211 @@
+// `linesurf info INPUT`: what a scene file holds (counts, extent, histograms, warnings).
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "engine/io/read_scene.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "tools/cli/commands.h"
+
+namespace linesurf::cli {
+namespace {
+
+/// Upper bounds (inclusive) of the views-per-segment bins; the last bin is open.
+constexpr std::size_t kViewBinUpper[] = {0, 1, 2, 5, 10, 20, 50, 100};
+
+struct InfoArgs {
+  std::string input;
+  std::string nvm;
+  std::string colmap;
+  bool json = false;
+};
+
+std::string Num(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", v);
+  return buffer;
+}
+
+std::string VecText(const Vec3& v) { return "[" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + "]"; }
+
+nlohmann::json VecJson(const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+nlohmann::json BoxJson(const Box3& box) {
+  if (box.IsEmpty()) return nullptr;
+  return {{"min", VecJson(box.min)}, {"max", VecJson(box.max)}, {"extent", VecJson(box.Extent())},
+          {"diagonal", box.Extent().norm()}};
+}
+
+/// Everything `info` reports, as JSON (the text output is rendered from it).
+nlohmann::json Describe(const Scene& scene) {
+  nlohmann::json info;
+  info["segments"] = scene.NumSegments();
+  info["viewpoints"] = scene.viewpoints.size();
+  info["observations"] = scene.observations.NumItems();
+  info["residuals"] = scene.residuals.size();
+  info["planes"] = scene.planes.size();
+  if (scene.HasMemberships()) {
+    std::size_t counts[3] = {0, 0, 0};
+    for (const PlaneMembership& m : scene.memberships) ++counts[std::min<int>(m.count, 2)];
+    info["segments_by_plane_count"] = {counts[0], counts[1], counts[2]};
+  }
+  Box3 segments_box, all_box;
+  std::vector<double> lengths;
+  lengths.reserve(scene.NumSegments());
+  for (const Segment3& s : scene.segments) {
+    if (s.p1.allFinite() && s.p2.allFinite()) {
+      segments_box.Extend(s.p1);
+      segments_box.Extend(s.p2);
+      const double length = s.Length();
+      if (std::isfinite(length)) lengths.push_back(length);  // overflow (|x| ~ 1e300): not binned
+    }
+  }
+  all_box = segments_box;
+  for (const Vec3& v : scene.viewpoints) {
+    if (v.allFinite()) all_box.Extend(v);
+  }
+  info["bounding_box"] = BoxJson(segments_box);
+  info["bounding_box_with_viewpoints"] = BoxJson(all_box);
+
+  nlohmann::json views = nlohmann::json::array();
+  std::vector<std::size_t> view_bins(std::size(kViewBinUpper) + 1, 0);
+  for (std::size_t s = 0; s < scene.observations.NumRows(); ++s) {
+    const std::size_t n = scene.observations[SegmentId(s)].size();
+    const auto* bin = std::lower_bound(std::begin(kViewBinUpper), std::end(kViewBinUpper), n);
+    ++view_bins[static_cast<std::size_t>(bin - std::begin(kViewBinUpper))];
+  }
+  std::size_t lower = 0;
+  for (std::size_t b = 0; b < view_bins.size(); ++b) {
+    const bool open = b == std::size(kViewBinUpper);
+    const std::string label = open ? std::to_string(lower) + "+"
+                              : lower == kViewBinUpper[b]
+                                  ? std::to_string(lower)
+                                  : std::to_string(lower) + "-" + std::to_string(kViewBinUpper[b]);
+    views.push_back({{"views", label}, {"segments", view_bins[b]}});
+    if (!open) lower = kViewBinUpper[b] + 1;
+  }
+  info["views_per_segment"] = views;
+
+  if (!lengths.empty()) {
+    std::sort(lengths.begin(), lengths.end());
+    auto quantile = [&](double q) {
+      return lengths[static_cast<std::size_t>(q * static_cast<double>(lengths.size() - 1) + 0.5)];
+    };
+    info["segment_length"] = {{"min", lengths.front()}, {"p05", quantile(0.05)},
+                              {"p25", quantile(0.25)},  {"median", quantile(0.5)},
+                              {"p75", quantile(0.75)},  {"p95", quantile(0.95)},
+                              {"max", lengths.back()}};
+    // Histogram over octaves [2^k, 2^(k+1)); zero lengths get their own bin.
+    nlohmann::json bins = nlohmann::json::array();
+    std::size_t zero = 0, i = 0;
+    while (i < lengths.size() && !(lengths[i] > 0.0)) ++zero, ++i;
+    if (zero > 0) bins.push_back({{"from", 0.0}, {"to", 0.0}, {"segments", zero}});
+    while (i < lengths.size()) {
+      const double from = std::exp2(std::floor(std::log2(lengths[i])));
+      const double to = 2.0 * from;
+      std::size_t count = 0;
+      while (i < lengths.size() && lengths[i] < to) ++count, ++i;
+      bins.push_back({{"from", from}, {"to", to}, {"segments", count}});
+    }
+    info["segment_length_histogram"] = bins;
+  }
+  return info;
+}
+
+void PrintText(const nlohmann::json& info, const std::string& input) {
+  std::cout << "input: " << input << "\n";
+  for (const char* key : {"segments", "viewpoints", "observations", "residuals", "planes"}) {
+    std::cout << key << ": " << info[key].get<std::size_t>() << "\n";
+  }
+  if (info.contains("segments_by_plane_count")) {
+    const auto& c = info["segments_by_plane_count"];
+    std::cout << "segments with 0 / 1 / 2 planes: " << c[0].get<std::size_t>() << " / "
+              << c[1].get<std::size_t>() << " / " << c[2].get<std::size_t>() << "\n";
+  } else {
+    std::cout << "segments with 0 / 1 / 2 planes: (no plane memberships in the input)\n";
+  }
+  for (const char* key : {"bounding_box", "bounding_box_with_viewpoints"}) {
+    const auto& b = info[key];
+    std::cout << (std::string(key) == "bounding_box" ? "bounding box (segments): "
+                                                     : "bounding box (with viewpoints): ");
+    if (b.is_null()) {
+      std::cout << "(empty)\n";
+      continue;
+    }
+    const auto vec = [](const nlohmann::json& a) {
+      return Vec3(a[0].get<double>(), a[1].get<double>(), a[2].get<double>());
+    };
+    const Vec3 e = vec(b["extent"]);
+    std::cout << VecText(vec(b["min"])) << " .. " << VecText(vec(b["max"])) << ", extent "
+              << Num(e.x()) << " x " << Num(e.y()) << " x " << Num(e.z()) << ", diagonal "
+              << Num(b["diagonal"].get<double>()) << "\n";
+  }
+  std::cout << "views per segment:";
+  for (const auto& bin : info["views_per_segment"]) {
+    std::cout << "  " << bin["views"].get<std::string>() << ": " << bin["segments"].get<std::size_t>();
+  }
+  std::cout << "\n";
+  if (info.contains("segment_length")) {
+    const auto& l = info["segment_length"];
+    std::cout << "segment length: min " << Num(l["min"].get<double>()) << ", p05 "
+              << Num(l["p05"].get<double>()) << ", p25 " << Num(l["p25"].get<double>())
+              << ", median " << Num(l["median"].get<double>()) << ", p75 "
+              << Num(l["p75"].get<double>()) << ", p95 " << Num(l["p95"].get<double>())
+              << ", max " << Num(l["max"].get<double>()) << "\n";
+    std::cout << "segment length histogram:\n";
+    for (const auto& bin : info["segment_length_histogram"]) {
+      std::cout << "  [" << Num(bin["from"].get<double>()) << ", " << Num(bin["to"].get<double>())
+                << "): " << bin["segments"].get<std::size_t>() << "\n";
+    }
+  }
+  const auto& warnings = info["warnings"];
+  std::cout << "warnings: " << warnings.size() << "\n";
+  for (const auto& w : warnings) std::cout << "  - " << w.get<std::string>() << "\n";
+}
+
+}  // namespace
+
+Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
+  auto args = std::make_shared<InfoArgs>();
+  Command cmd;
+  cmd.app = app.add_subcommand(
+      "info", "Describe a scene file: counts, bounding box, histograms, sanitation warnings");
+  cmd.app->add_option("INPUT", args->input,
+                      "Scene file: .json (reference JSON), .txt (Line3D++), .obj (v/l lines)")
+      ->required();
+  auto* nvm = cmd.app->add_option("--nvm", args->nvm, "Line3D++ input: VisualSfM .nvm with the cameras");
+  cmd.app->add_option("--colmap", args->colmap,
+                      "Line3D++ input: COLMAP text model directory (images.txt)")
+      ->excludes(nvm);
+  cmd.app->add_flag("--json", args->json, "Print the description as JSON on stdout");
+  cmd.run = [args]() -> int {
+    io::SceneReadOptions read_options;
+    read_options.nvm = args->nvm;
+    read_options.colmap = args->colmap;
+    auto read = io::ReadSceneWithWarnings(args->input, read_options);
+    if (!read) return ReportError(read.error());
+    nlohmann::json info = Describe(read->scene);
+    nlohmann::json warnings = read->warnings;
+    // What sanitation would fix or drop before a reconstruction.
+    auto sanitized = pipeline::SanitizeScene(read->scene, pipeline::SanitizeOptions{});
+    if (sanitized) {
+      for (const std::string& w : sanitized->warnings) warnings.push_back("sanitation: " + w);
+    }
+    info["warnings"] = warnings;
+    if (args->json) {
+      info["input"] = args->input;
+      std::cout << info.dump(2) << "\n";
+    } else {
+      PrintText(info, args->input);
+    }
+    return sanitized ? kExitOk : ReportError(sanitized.error());
+  };
+  return cmd;
+}
+
+}  // namespace linesurf::cli
