@@ -168,6 +168,7 @@ class Detector {
       for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
       planes_.push_back({plane, std::move(inliers)});
     }
+    ctx_.ReportProgress(kStage, 1.0);
   }
 
   std::vector<detect::SupportedPlane>& planes() { return planes_; }
