@@ -12,6 +12,7 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common);
 Command AddEvaluateCommand(CLI::App& app, CommonOptions& common);
 Command AddRenderCommand(CLI::App& app, CommonOptions& common);
 Command AddArrangeCommand(CLI::App& app, CommonOptions& common);
+Command AddDetectCommand(CLI::App& app, CommonOptions& common);
 Command AddReconstructCommand(CLI::App& app, CommonOptions& common);
 
 }  // namespace linesurf::cli

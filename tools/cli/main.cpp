@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   commands.push_back(AddEvaluateCommand(app, common));
   commands.push_back(AddRenderCommand(app, common));
   commands.push_back(AddArrangeCommand(app, common));
+  commands.push_back(AddDetectCommand(app, common));
   commands.push_back(AddReconstructCommand(app, common));
   // Later subcommands register here (one cmd_<name>.cpp each).
 
