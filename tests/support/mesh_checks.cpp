@@ -146,4 +146,29 @@ bool IsClosed(const PolygonMesh& mesh) { return CheckMesh(mesh).closed; }
 bool IsOutwardOriented(const PolygonMesh& mesh) { return CheckMesh(mesh).outward_oriented; }
 double Volume(const PolygonMesh& mesh) { return CheckMesh(mesh).volume; }
 
+std::vector<bool> PointsStrictlyInside(const PolygonMesh& mesh, const std::vector<Vec3>& points) {
+  try {
+    std::vector<Point> soup_points;
+    for (const Vec3& v : mesh.vertices) soup_points.emplace_back(v.x(), v.y(), v.z());
+    std::vector<std::vector<std::size_t>> polygons;
+    for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+      const auto face = mesh.Face(f);
+      polygons.emplace_back(face.begin(), face.end());
+    }
+    if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return {};
+    Mesh sm;
+    PMP::polygon_soup_to_polygon_mesh(soup_points, polygons, sm);
+    if (!PMP::triangulate_faces(sm)) return {};
+    CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(sm);
+    std::vector<bool> inside;
+    inside.reserve(points.size());
+    for (const Vec3& p : points) {
+      inside.push_back(side(Point(p.x(), p.y(), p.z())) == CGAL::ON_BOUNDED_SIDE);
+    }
+    return inside;
+  } catch (...) {
+    return {};
+  }
+}
+
 }  // namespace linesurf::testing

@@ -3,6 +3,7 @@
 // linesurf_mesh_checks; CGAL stays private to mesh_checks.cpp).
 
 #include <cstddef>
+#include <vector>
 
 #include "engine/core/polygon_mesh.h"
 
@@ -29,5 +30,8 @@ bool IsClosed(const PolygonMesh& mesh);
 bool IsOutwardOriented(const PolygonMesh& mesh);
 /// Signed enclosed volume (0 when the mesh is not closed).
 double Volume(const PolygonMesh& mesh);
+/// For each point: strictly inside the closed mesh (ray parity over all components, so cavities
+/// count as outside). Points on the surface count as outside. Empty result if not triangulable.
+std::vector<bool> PointsStrictlyInside(const PolygonMesh& mesh, const std::vector<Vec3>& points);
 
 }  // namespace linesurf::testing

@@ -330,6 +330,41 @@ TEST(Synthesize, CityIsClosedBuildingsWithStreetViews) {
   EXPECT_GT(s.scene.segments.size(), 25u * 40u);
 }
 
+TEST(Synthesize, CitySightRaysNeverCrossABuilding) {
+  const SyntheticScene s = Make(Family("city", 16));
+  // Samples of every sight ray (eye to midpoint and to both ends), tested against the ground
+  // truth with CGAL (independent of the generator's own ray/triangle tests).
+  constexpr int kSamples = 40;
+  std::vector<Vec3> samples;
+  std::vector<std::size_t> owner;
+  for (std::size_t i = 0; i < s.scene.segments.size(); ++i) {
+    if (s.kinds[i] == SegmentKind::kOutlier) continue;
+    const Segment3& seg = s.scene.segments[SegmentId(i)];
+    for (ViewpointId v : s.scene.observations[SegmentId(i)]) {
+      const Vec3& eye = s.scene.viewpoints[v];
+      const std::array<Vec3, 3> targets = {seg.Midpoint(), Vec3(seg.p1 + 0.02 * (seg.p2 - seg.p1)),
+                                            Vec3(seg.p1 + 0.98 * (seg.p2 - seg.p1))};
+      for (const Vec3& target : targets) {
+        for (int k = 0; k < kSamples; ++k) {
+          samples.push_back(eye + (target - eye) * (0.995 * k / kSamples));
+          owner.push_back(i);
+        }
+      }
+    }
+  }
+  const std::vector<bool> inside = testing::PointsStrictlyInside(s.ground_truth, samples);
+  ASSERT_EQ(inside.size(), samples.size());
+  std::size_t crossing = 0;
+  for (std::size_t k = 0; k < inside.size(); ++k) {
+    if (inside[k]) {
+      ++crossing;
+      ADD_FAILURE() << "segment " << owner[k] << " seen through a building";
+      if (crossing > 5) break;
+    }
+  }
+  EXPECT_GT(samples.size(), 10000u);
+}
+
 TEST(Synthesize, CityOfAThousandBuildingsGenerates) {
   const SyntheticScene s = Make(Family("city", 1000));
   EXPECT_EQ(testing::CheckMesh(s.ground_truth).num_components, 1000u);
