@@ -39,8 +39,8 @@ int Run(const ArrangeArgs& args, const CommonOptions& common) {
   auto scene = io::ReadReferenceJson(args.planes_path);
   if (!scene) return ReportError(scene.error());
 
-  // The complex works in a local frame centred on the box.
-  const Vec3 centre = scene->world_from_local.Apply(box_in_world.Center()) - scene->world_from_local.translation;
+  // The complex works in a local frame centred on the box (the box and the file share a frame).
+  const Vec3 centre = box_in_world.Center();
   Box3 box;
   box.min = box_in_world.min - centre;
   box.max = box_in_world.max - centre;
