@@ -3,38 +3,23 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "engine/io/mesh_io.h"
 #include "engine/io/reference_json.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/test_paths.h"
 
 namespace linesurf {
 namespace {
 
-std::string Slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using testing::ShellQuote;
+using testing::Slurp;
 
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
-
-/// Runs build/bin/linesurf with `args`; returns the exit code (stderr into dir/stderr.txt).
+/// Runs build/bin/linesurf with `args`; returns the exit code (stderr in dir/stderr.txt).
 int RunLinesurf(const std::string& args, const std::filesystem::path& dir) {
-  const auto exe = testing::BinDir() / "linesurf";
-  const std::string command = Quote(exe.string()) + " " + args + " > " +
-                              Quote((dir / "stdout.txt").string()) + " 2> " +
-                              Quote((dir / "stderr.txt").string());
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return testing::RunLinesurf(args, dir).exit_code;
 }
 
 class CliSynth : public ::testing::Test {
@@ -50,12 +35,12 @@ class CliSynth : public ::testing::Test {
 
 TEST_F(CliSynth, SameSeedGivesByteIdenticalFilesForAnyThreadCount) {
   const std::string spec = "synth house --seed 5 --noise 0.01 --outliers 0.05 -o ";
-  ASSERT_EQ(RunLinesurf("-j 1 " + spec + Quote((dir_ / "a").string()), dir_), 0)
+  ASSERT_EQ(RunLinesurf("-j 1 " + spec + ShellQuote((dir_ / "a").string()), dir_), 0)
       << Slurp(dir_ / "stderr.txt");
-  ASSERT_EQ(RunLinesurf("-j 2 " + spec + Quote((dir_ / "b").string()), dir_), 0)
+  ASSERT_EQ(RunLinesurf("-j 2 " + spec + ShellQuote((dir_ / "b").string()), dir_), 0)
       << Slurp(dir_ / "stderr.txt");
   ASSERT_EQ(RunLinesurf("synth house --seed 6 --noise 0.01 --outliers 0.05 -o " +
-                            Quote((dir_ / "c").string()),
+                            ShellQuote((dir_ / "c").string()),
                         dir_),
             0);
   for (const char* file : {"lines.json", "ground_truth.ply", "meta.json"}) {
@@ -68,7 +53,7 @@ TEST_F(CliSynth, SameSeedGivesByteIdenticalFilesForAnyThreadCount) {
 }
 
 TEST_F(CliSynth, FilesReadBackIntoASceneWithTruePlanesAndAClosedMesh) {
-  ASSERT_EQ(RunLinesurf("synth cube --seed 1 -o " + Quote(dir_.string()), dir_), 0)
+  ASSERT_EQ(RunLinesurf("synth cube --seed 1 -o " + ShellQuote(dir_.string()), dir_), 0)
       << Slurp(dir_ / "stderr.txt");
   Expected<Scene> scene = io::ReadReferenceJson(dir_ / "lines.json");
   ASSERT_TRUE(scene.has_value()) << scene.error().ToString();
@@ -88,9 +73,9 @@ TEST_F(CliSynth, FilesReadBackIntoASceneWithTruePlanesAndAClosedMesh) {
 }
 
 TEST_F(CliSynth, BadOptionsExitWithUsageCode) {
-  EXPECT_EQ(RunLinesurf("synth castle -o " + Quote(dir_.string()), dir_), 2);
-  EXPECT_EQ(RunLinesurf("synth city --size -3 -o " + Quote(dir_.string()), dir_), 2);
-  EXPECT_EQ(RunLinesurf("synth cube --outliers 0.95 -o " + Quote(dir_.string()), dir_), 2);
+  EXPECT_EQ(RunLinesurf("synth castle -o " + ShellQuote(dir_.string()), dir_), 2);
+  EXPECT_EQ(RunLinesurf("synth city --size -3 -o " + ShellQuote(dir_.string()), dir_), 2);
+  EXPECT_EQ(RunLinesurf("synth cube --outliers 0.95 -o " + ShellQuote(dir_.string()), dir_), 2);
   EXPECT_EQ(RunLinesurf("synth cube", dir_), 2);  // no -o
 }
 
