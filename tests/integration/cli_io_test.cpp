@@ -11,8 +11,8 @@
 namespace linesurf {
 namespace {
 
-using testing::CliRun;
-using testing::ReadFileBytes;
+using CliRun = testing::CliRunResult;
+using testing::Slurp;
 using testing::RunLinesurf;
 
 std::string Quote(const std::string& s) { return testing::ShellQuote(s); }
@@ -69,7 +69,7 @@ TEST_F(CliIo, ConvertLine3dppWithNvmKeepsEveryValue) {
                                       Quote((dir_ / "o.json").string()),
                                   dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string json = ReadFileBytes(dir_ / "o.json");
+  const std::string json = Slurp(dir_ / "o.json");
   EXPECT_NE(json.find("\"pt2\": [1.0000000000000002, 0.0, 0.0]"), std::string::npos) << json;
   EXPECT_NE(json.find("[[0.1, 0.2, 0.3], [-4.5, 6.0, 7.25]]"), std::string::npos) << json;
   EXPECT_NE(json.find("[[1.5, 2.5, 3.5, 4.5], [1.0, 2.0, 3.0, 4.0]]"), std::string::npos) << json;
@@ -78,7 +78,7 @@ TEST_F(CliIo, ConvertLine3dppWithNvmKeepsEveryValue) {
       "convert " + Quote((dir_ / "o.json").string()) + " -o " + Quote((dir_ / "p.json").string()),
       dir_);
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_EQ(json, ReadFileBytes(dir_ / "p.json"));
+  EXPECT_EQ(json, Slurp(dir_ / "p.json"));
 }
 
 TEST_F(CliIo, UsageErrorsExitWithTwo) {

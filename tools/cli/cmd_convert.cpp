@@ -8,15 +8,14 @@
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/scene_input.h"
 
 namespace linesurf::cli {
 namespace {
 
 struct ConvertArgs {
-  std::string input;
+  SceneInputArgs scene;
   std::string output;
-  std::string nvm;
-  std::string colmap;
   bool sanitize = false;
 };
 
@@ -29,29 +28,22 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
       "convert",
       "Convert a scene (reference JSON, Line3D++ .txt + NVM/COLMAP, OBJ lines) to reference JSON, "
       "keeping every value");
-  cmd.app->add_option("INPUT", args->input,
-                      "Scene file: .json (reference JSON), .txt (Line3D++), .obj (v/l lines)")
-      ->required();
+  AddSceneInputOptions(*cmd.app, args->scene);
   cmd.app->add_option("-o,--output", args->output, "Output reference JSON file (.json)")
       ->required();
-  auto* nvm = cmd.app->add_option("--nvm", args->nvm, "Line3D++ input: VisualSfM .nvm with the cameras");
-  cmd.app->add_option("--colmap", args->colmap,
-                      "Line3D++ input: COLMAP text model directory (images.txt)")
-      ->excludes(nvm);
   cmd.app->add_flag("--sanitize", args->sanitize,
                     "Drop/fix bad elements first (as before a reconstruction); default: convert "
                     "values exactly as read");
   cmd.run = [args, &common]() -> int {
     if (io::LowerExtension(args->output) != ".json") {
       return ReportError(Error{ErrorCode::kInvalidOptions, "convert",
-                               args->output + ": the output must be a reference JSON (.json) file"});
+                               args->output + ": the output must be a .json file"});
     }
-    io::SceneReadOptions read_options;
-    read_options.nvm = args->nvm;
-    read_options.colmap = args->colmap;
-    auto read = io::ReadSceneWithWarnings(args->input, read_options);
+    auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
     if (!read) return ReportError(read.error());
-    for (const std::string& w : read->warnings) PrintWarning(common, args->input + ": " + w);
+    for (const std::string& w : read->warnings) {
+      PrintWarning(common, args->scene.input + ": " + w);
+    }
     Scene scene = std::move(read->scene);
     if (args->sanitize) {
       auto sanitized = pipeline::SanitizeScene(std::move(scene), pipeline::SanitizeOptions{});

@@ -11,6 +11,7 @@
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/scene_input.h"
 
 namespace linesurf::cli {
 namespace {
@@ -19,9 +20,7 @@ namespace {
 constexpr std::size_t kViewBinUpper[] = {0, 1, 2, 5, 10, 20, 50, 100};
 
 struct InfoArgs {
-  std::string input;
-  std::string nvm;
-  std::string colmap;
+  SceneInputArgs scene;
   bool json = false;
 };
 
@@ -175,19 +174,10 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
   Command cmd;
   cmd.app = app.add_subcommand(
       "info", "Describe a scene file: counts, bounding box, histograms, sanitation warnings");
-  cmd.app->add_option("INPUT", args->input,
-                      "Scene file: .json (reference JSON), .txt (Line3D++), .obj (v/l lines)")
-      ->required();
-  auto* nvm = cmd.app->add_option("--nvm", args->nvm, "Line3D++ input: VisualSfM .nvm with the cameras");
-  cmd.app->add_option("--colmap", args->colmap,
-                      "Line3D++ input: COLMAP text model directory (images.txt)")
-      ->excludes(nvm);
+  AddSceneInputOptions(*cmd.app, args->scene);
   cmd.app->add_flag("--json", args->json, "Print the description as JSON on stdout");
   cmd.run = [args]() -> int {
-    io::SceneReadOptions read_options;
-    read_options.nvm = args->nvm;
-    read_options.colmap = args->colmap;
-    auto read = io::ReadSceneWithWarnings(args->input, read_options);
+    auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
     if (!read) return ReportError(read.error());
     nlohmann::json info = Describe(read->scene);
     nlohmann::json warnings = read->warnings;
@@ -198,10 +188,10 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
     }
     info["warnings"] = warnings;
     if (args->json) {
-      info["input"] = args->input;
+      info["input"] = args->scene.input;
       std::cout << info.dump(2) << "\n";
     } else {
-      PrintText(info, args->input);
+      PrintText(info, args->scene.input);
     }
     return sanitized ? kExitOk : ReportError(sanitized.error());
   };
