@@ -17,7 +17,8 @@ endfunction()
 
 # linesurf_add_test(MODULE <name> SOURCES ... DEPS ... [LABELS ...])
 #   One GoogleTest executable per module; tests are named <module>/Suite.Case.
-#   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent.
+#   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent. Test
+#   executables sit in bin/ beside linesurf, which is how CLI tests find it (BinDir()).
 function(linesurf_add_test)
   cmake_parse_arguments(ARG "" "MODULE" "SOURCES;DEPS;LABELS" ${ARGN})
   if(NOT LINESURF_BUILD_TESTS)
@@ -33,7 +34,7 @@ function(linesurf_add_test)
   gtest_discover_tests(${target}
     TEST_PREFIX "${ARG_MODULE}/"
     PROPERTIES LABELS "${ARG_LABELS}"
-      ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared;LINESURF_BIN_DIR=${CMAKE_BINARY_DIR}/bin"
+      ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared"
     DISCOVERY_TIMEOUT 60)
 endfunction()
 
