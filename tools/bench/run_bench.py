@@ -307,6 +307,7 @@ def main():
                         help="where generated inputs, meshes and reports go")
     parser.add_argument("--shared", type=Path, default=REPO.parent / "shared")
     parser.add_argument("--scenes", help="comma-separated subset of scene names")
+    parser.add_argument("--all", action="store_true", help="also run the scenes marked slow")
     parser.add_argument("--threads", type=int, default=0, help="linesurf -j (0: all cores)")
     parser.add_argument("--repeat", type=int, default=1, help="reconstruct runs per scene; the fastest is kept")
     parser.add_argument("--min-stage-seconds", type=float, default=0.5,
@@ -327,6 +328,11 @@ def main():
         if unknown:
             parser.error("unknown scenes: %s" % ", ".join(unknown))
         scenes = [s for s in scenes if s["name"] in wanted]
+    elif not args.all:
+        for scene in scenes:
+            if scene.get("slow"):
+                log("%s: marked slow, skipped (use --all or --scenes %s)" % (scene["name"], scene["name"]))
+        scenes = [s for s in scenes if not s.get("slow")]
     args.linesurf = args.linesurf.resolve()
     args.workdir.mkdir(parents=True, exist_ok=True)
 

@@ -56,6 +56,7 @@ nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r, doubl
             {"num_components", t.num_components},
             {"num_faces", t.num_faces},
             {"num_vertices", t.num_vertices},
+            {"num_coincident_vertices", t.num_coincident_vertices},
             {"num_boundary_edges", t.num_boundary_edges},
             {"num_non_manifold_edges", t.num_non_manifold_edges},
             {"num_non_manifold_vertices", t.num_non_manifold_vertices},
@@ -85,8 +86,10 @@ void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
   row("GT -> result", r.gt_to_result);
   const MeshTopology& t = r.topology;
   const auto yes = [](bool b) { return b ? "yes" : "no"; };
-  std::printf("\nresult mesh: %zu faces, %zu vertices, %zu component(s), area %.6g, volume %.6g\n",
-              t.num_faces, t.num_vertices, t.num_components, r.result_area, t.signed_volume);
+  std::printf("\nresult mesh: %zu faces, %zu vertices (%zu at the position of another), %zu component(s),\n"
+              "  area %.6g, signed volume %.6g\n",
+              t.num_faces, t.num_vertices, t.num_coincident_vertices, t.num_components, r.result_area,
+              t.signed_volume);
   std::printf("  closed %s (%zu boundary edges), 2-manifold %s (%zu non-manifold edges, %zu vertices),\n"
               "  oriented %s, outward %s, self-intersecting %s\n",
               yes(t.closed), t.num_boundary_edges, yes(t.two_manifold), t.num_non_manifold_edges,

@@ -137,14 +137,40 @@ TEST(MeshTopology, OverlappingCubesSelfIntersect) {
   EXPECT_EQ(apart->num_components, 2U);
 }
 
+/// Merges vertices at identical positions (the test's own, simple O(V^2) version).
+PolygonMesh Weld(PolygonMesh mesh) {
+  std::vector<std::uint32_t> target(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    target[v] = static_cast<std::uint32_t>(v);
+    for (std::size_t u = 0; u < v; ++u) {
+      if (mesh.vertices[u] == mesh.vertices[v]) {
+        target[v] = target[u];
+        break;
+      }
+    }
+  }
+  for (auto& i : mesh.face_indices) i = target[i];
+  return mesh;
+}
+
 TEST(MeshTopology, CubesSharingAnEdgeAreNotManifold) {
-  // Two unit boxes touching along the edge x = y = 1: welded vertices make it non-manifold.
-  const auto topo = CheckMeshTopology(
-      Append(Box(Vec3(0, 0, 0), Vec3(1, 1, 1)), Box(Vec3(1, 1, 0), Vec3(2, 2, 1))));
+  // Two unit boxes touching along the edge x = y = 1, sharing its two vertices.
+  const PolygonMesh touching = Append(Box(Vec3(0, 0, 0), Vec3(1, 1, 1)), Box(Vec3(1, 1, 0), Vec3(2, 2, 1)));
+  const auto topo = CheckMeshTopology(Weld(touching));
   ASSERT_TRUE(topo);
   EXPECT_FALSE(topo->two_manifold);
+  EXPECT_FALSE(topo->closed);
   EXPECT_EQ(topo->num_non_manifold_edges, 1U);
   EXPECT_EQ(topo->num_components, 1U);
+  EXPECT_FALSE(topo->self_intersecting);
+  // With the edge's vertices split into copies (as linesurf's extraction does), the mesh is a
+  // closed 2-manifold whose two parts touch: not counted as self-intersecting.
+  const auto split = CheckMeshTopology(touching);
+  ASSERT_TRUE(split);
+  EXPECT_TRUE(split->two_manifold && split->closed && split->outward);
+  EXPECT_EQ(split->num_coincident_vertices, 2U);
+  EXPECT_FALSE(split->self_intersecting);
+  EXPECT_EQ(split->num_components, 2U);
 }
 
 TEST(MeshTopology, BadIndexIsInvalidInput) {

@@ -48,10 +48,9 @@ class DisjointSets {
   std::vector<std::size_t> parent_;
 };
 
-/// Maps every vertex to the first vertex at the bit-identical position.
-std::vector<std::uint32_t> WeldIdenticalVertices(const PolygonMesh& mesh, std::size_t& num_welded) {
-  const std::size_t n = mesh.vertices.size();
-  std::vector<std::uint32_t> order(n);
+/// Number of vertices at the bit-identical position of a vertex with a smaller index.
+std::size_t CountCoincidentVertices(const PolygonMesh& mesh) {
+  std::vector<std::uint32_t> order(mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0U);
   const auto key = [&](std::uint32_t v) {
     const Vec3& p = mesh.vertices[v];
@@ -59,14 +58,11 @@ std::vector<std::uint32_t> WeldIdenticalVertices(const PolygonMesh& mesh, std::s
   };
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-  std::vector<std::uint32_t> weld(n);
-  num_welded = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool same = i > 0 && mesh.vertices[order[i]] == mesh.vertices[order[i - 1]];
-    weld[order[i]] = same ? weld[order[i - 1]] : order[i];
-    num_welded += same ? 0 : 1;
+  std::size_t coincident = 0;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    coincident += mesh.vertices[order[i]] == mesh.vertices[order[i - 1]] ? 1 : 0;
   }
-  return weld;
+  return coincident;
 }
 
 bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::size_t>>& faces) {
@@ -84,7 +80,26 @@ bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::
   PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
   LINESURF_THROW_IF(!PMP::triangulate_faces(cgal_mesh), kDegenerate, kStage,
                     "a face could not be triangulated for the self-intersection test");
-  return PMP::does_self_intersect(cgal_mesh);
+  using Face = CgalMesh::Face_index;
+  std::vector<std::pair<Face, Face>> pairs;
+  PMP::self_intersections(CGAL::faces(cgal_mesh), cgal_mesh, std::back_inserter(pairs));
+  // Faces that meet at a common position without sharing the vertex (split non-manifold
+  // vertices, coincident copies) touch there; CGAL reports them, we do not count them.
+  const auto corners = [&](Face f) {
+    std::vector<Kernel::Point_3> out;
+    for (auto v : CGAL::vertices_around_face(cgal_mesh.halfedge(f), cgal_mesh)) {
+      out.push_back(cgal_mesh.point(v));
+    }
+    return out;
+  };
+  for (const auto& [f, g] : pairs) {
+    bool touching = false;
+    for (const auto& p : corners(f)) {
+      for (const auto& q : corners(g)) touching = touching || p == q;
+    }
+    if (!touching) return true;
+  }
+  return false;
 }
 
 MeshTopology Check(const PolygonMesh& mesh) {
@@ -99,15 +114,16 @@ MeshTopology Check(const PolygonMesh& mesh) {
   }
   MeshTopology topo;
   topo.num_faces = mesh.NumFaces();
-  const std::vector<std::uint32_t> weld = WeldIdenticalVertices(mesh, topo.num_vertices);
+  topo.num_vertices = mesh.vertices.size();
+  topo.num_coincident_vertices = CountCoincidentVertices(mesh);
 
-  // Welded faces; those with fewer than 3 distinct vertices or a repeated vertex are degenerate
+  // Faces by vertex index; those with fewer than 3 distinct vertices or a repeated vertex are degenerate
   // and take no part in the checks.
   std::vector<std::vector<std::size_t>> faces;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     std::vector<std::size_t> face;
     for (std::uint32_t v : mesh.Face(f)) {
-      if (face.empty() || face.back() != weld[v]) face.push_back(weld[v]);
+      if (face.empty() || face.back() != v) face.push_back(v);
     }
     while (face.size() > 1 && face.front() == face.back()) face.pop_back();
     std::vector<std::size_t> sorted = face;

@@ -10,8 +10,9 @@
 
 namespace linesurf {
 
-/// What the checks found. Vertices at bit-identical positions are merged first (so a mesh
-/// written with one vertex copy per face is judged by its shape, not by its indexing).
+/// What the checks found. Connectivity is by vertex index, as CGAL's halfedge meshes see it: two
+/// vertices at the same position are different vertices (linesurf's extraction splits
+/// non-manifold vertices that way on purpose); num_coincident_vertices counts them.
 struct MeshTopology {
   /// No boundary edge: every undirected edge is used by exactly two faces (and the mesh has faces).
   bool closed = false;
@@ -21,14 +22,16 @@ struct MeshTopology {
   bool oriented = false;
   /// Closed, oriented and with positive signed volume (normals point outwards).
   bool outward = false;
-  /// Two faces intersect other than at a shared edge or vertex (CGAL does_self_intersect on the
-  /// triangulated faces). When the mesh is not a 2-manifold, CGAL first splits its non-manifold
-  /// vertices, so faces that only touch there count as intersecting.
+  /// Two faces intersect other than at a shared edge or vertex (CGAL self_intersections on the
+  /// triangulated faces). Pairs that have a corner position in common are taken as touching
+  /// there and not counted (split vertices; a crossing elsewhere in such a pair is missed).
   bool self_intersecting = false;
   /// Connected components, faces linked through shared edges.
   std::size_t num_components = 0;
   std::size_t num_faces = 0;
-  std::size_t num_vertices = 0;  ///< after merging identical positions
+  std::size_t num_vertices = 0;
+  /// Vertices at the bit-identical position of another vertex.
+  std::size_t num_coincident_vertices = 0;
   std::size_t num_boundary_edges = 0;
   std::size_t num_non_manifold_edges = 0;    ///< used by more than two faces
   std::size_t num_non_manifold_vertices = 0;  ///< whose incident faces form several fans
