@@ -261,7 +261,8 @@ def compare(record, base, min_stage_seconds):
         return out
     if record["status"] != "ok":
         return ["scene %s (baseline ran)" % record["status"]]
-    if record["wall_seconds"] > (1 + SLOWER_TOLERANCE) * base["wall_seconds"]:
+    if (max(record["wall_seconds"], base["wall_seconds"]) >= min_stage_seconds
+            and record["wall_seconds"] > (1 + SLOWER_TOLERANCE) * base["wall_seconds"]):
         out.append("wall %.2f s vs baseline %.2f s (+%.0f %%)" % (
             record["wall_seconds"], base["wall_seconds"], 100 * (record["wall_seconds"] / base["wall_seconds"] - 1)))
     for stage, seconds in record["stages"].items():
@@ -311,7 +312,7 @@ def main():
     parser.add_argument("--threads", type=int, default=0, help="linesurf -j (0: all cores)")
     parser.add_argument("--repeat", type=int, default=1, help="reconstruct runs per scene; the fastest is kept")
     parser.add_argument("--min-stage-seconds", type=float, default=0.5,
-                        help="stages shorter than this are not compared for speed (noise)")
+                        help="stages and runs shorter than this are not compared for speed (noise)")
     parser.add_argument("--pictures", type=Path, help="also render input|result PNGs into this directory")
     parser.add_argument("--update-baseline", action="store_true",
                         help="replace the baseline's records of the scenes run with this run's")
