@@ -22,16 +22,7 @@ std::filesystem::path WriteText(const std::filesystem::path& path, const std::st
   return path;
 }
 
-class CliIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!std::filesystem::exists(testing::BinDir() / "linesurf")) {
-      GTEST_FAIL() << "linesurf executable not found in " << testing::BinDir();
-    }
-    dir_ = testing::FreshTempDir();
-  }
-  std::filesystem::path dir_;
-};
+class CliIo : public testing::CliTest {};
 
 TEST_F(CliIo, InfoOnAndalusianPrintsTheReferenceCounts) {
   LINESURF_REQUIRE_ANDALUSIAN(input);

@@ -22,16 +22,7 @@ int RunLinesurf(const std::string& args, const std::filesystem::path& dir) {
   return testing::RunLinesurf(args, dir).exit_code;
 }
 
-class CliSynth : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!std::filesystem::exists(testing::BinDir() / "linesurf")) {
-      GTEST_FAIL() << "linesurf executable not found in " << testing::BinDir();
-    }
-    dir_ = testing::FreshTempDir();
-  }
-  std::filesystem::path dir_;
-};
+class CliSynth : public testing::CliTest {};
 
 TEST_F(CliSynth, SameSeedGivesByteIdenticalFilesForAnyThreadCount) {
   const std::string spec = "synth house --seed 5 --noise 0.01 --outliers 0.05 -o ";

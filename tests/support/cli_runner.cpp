@@ -33,4 +33,11 @@ CliRunResult RunLinesurf(const std::string& args, const std::filesystem::path& s
   return result;
 }
 
+void CliTest::SetUp() {
+  if (!std::filesystem::exists(BinDir() / "linesurf")) {
+    GTEST_FAIL() << "linesurf executable not found in " << BinDir();
+  }
+  dir_ = FreshTempDir();
+}
+
 }  // namespace linesurf::testing

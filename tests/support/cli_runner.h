@@ -1,6 +1,8 @@
 #pragma once
 // Runs the built `linesurf` executable from tests, as a user would.
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
 
@@ -19,5 +21,13 @@ std::string ShellQuote(const std::string& s);
 /// Runs BinDir()/linesurf with `args` (already quoted); stdout and stderr go through files in
 /// `scratch_dir`.
 CliRunResult RunLinesurf(const std::string& args, const std::filesystem::path& scratch_dir);
+
+/// Fixture of CLI tests: fails when the linesurf executable is missing, and gives each test a
+/// fresh scratch directory `dir_`.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override;
+  std::filesystem::path dir_;
+};
 
 }  // namespace linesurf::testing
