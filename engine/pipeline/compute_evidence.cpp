@@ -117,6 +117,14 @@ void AddSightRay(const Context& c, ViewpointId view, const Vec3& target, CellId 
   c.acc.crossings.fetch_add(crossed, std::memory_order_relaxed);
 }
 
+/// Counts `num_views` samples at `q`; false (and counted as outside) when q is off the box.
+bool CountSample(const Context& c, const Vec3& q, std::size_t num_views) {
+  c.acc.samples.fetch_add(num_views, std::memory_order_relaxed);
+  if (c.cx.box.Contains(q)) return true;
+  c.acc.outside.fetch_add(num_views, std::memory_order_relaxed);
+  return false;
+}
+
 std::int32_t NumSamples(const Context& c, double length) {
   const double k = std::ceil(c.options.samples_per_sigma * length / c.sigma);
   return static_cast<std::int32_t>(
@@ -142,11 +150,7 @@ void AddTextural(const Context& c, SegmentId s, const Plane3& plane, double leng
   CellId minus;
   for (std::int32_t k = 0; k < k_samples; ++k) {
     const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
-    c.acc.samples.fetch_add(views.size(), std::memory_order_relaxed);
-    if (!c.cx.box.Contains(q)) {
-      c.acc.outside.fetch_add(views.size(), std::memory_order_relaxed);
-      continue;
-    }
+    if (!CountSample(c, q, views.size())) continue;
     const Vec3 q_plus = q + c.offset * n;
     const Vec3 q_minus = q - c.offset * n;
     // The previous sample's cells are close: start the location walk there.
@@ -205,11 +209,7 @@ void AddStructural(const Context& c, SegmentId s, const Plane3& p1, const Plane3
   std::array<CellId, 4> previous{};
   for (std::int32_t k = 0; k < k_samples; ++k) {
     const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
-    c.acc.samples.fetch_add(views.size(), std::memory_order_relaxed);
-    if (!c.cx.box.Contains(q)) {
-      c.acc.outside.fetch_add(views.size(), std::memory_order_relaxed);
-      continue;
-    }
+    if (!CountSample(c, q, views.size())) continue;
     std::array<CellId, 4> cells{};
     std::array<Vec3, 4> points;
     for (int qd = 0; qd < 4; ++qd) {
@@ -266,11 +266,7 @@ void AddVisibilityOnly(const Context& c, SegmentId s) {
   CellId hint;
   for (std::int32_t k = 0; k < k_samples; ++k) {
     const Vec3 q = seg.p1 + ((k + 0.5) / k_samples) * (seg.p2 - seg.p1);
-    c.acc.samples.fetch_add(views.size(), std::memory_order_relaxed);
-    if (!c.cx.box.Contains(q)) {
-      c.acc.outside.fetch_add(views.size(), std::memory_order_relaxed);
-      continue;
-    }
+    if (!CountSample(c, q, views.size())) continue;
     for (const ViewpointId v : views) {
       const std::array<Vec3, 1> ties{c.scene.viewpoints[v] - q};
       hint = c.locator.Locate(q, ties, hint);

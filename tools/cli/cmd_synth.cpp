@@ -9,6 +9,8 @@
 
 #include <tbb/task_arena.h>
 
+#include "engine/core/parallel.h"
+
 #include "engine/io/mesh_io.h"
 #include "engine/io/reference_json.h"
 #include "tools/cli/commands.h"
@@ -36,7 +38,7 @@ int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   if (args.max_trim >= 0.0) spec.max_trim = args.max_trim;
   if (Status valid = spec.Validate(); !valid) return ReportError(valid.error());
 
-  tbb::task_arena arena(common.threads > 0 ? common.threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(ArenaConcurrency(common.threads));
   Expected<synth::SyntheticScene> scene = arena.execute([&] { return synth::Synthesize(spec); });
   if (!scene) return ReportError(scene.error());
 
