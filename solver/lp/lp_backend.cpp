@@ -2,9 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "engine/core/exception.h"
 #include "solver/energy/build_lp.h"
+#include "solver/lp/band_fixing.h"
 #include "solver/lp/backends/clp/clp_backend.h"
 #include "solver/lp/backends/maxflow/maxflow_backend.h"
 #include "solver/lp/backends/pdhg/pdhg_backend.h"
@@ -23,7 +25,33 @@ std::string ResolveBackend(const std::string& requested, const ReducedEnergy& re
                            std::size_t lp_columns, const LabelingOptions& options) {
   if (requested != "auto") return requested;
   if (!reduced.HasHigherOrderTerms()) return "maxflow";
+  if (lp_columns > options.auto_band_min_columns) return "band";
   return lp_columns <= options.auto_clp_max_columns ? "clp" : "pdhg";
+}
+
+LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
+                     const RunContext& ctx);
+
+// Band strategy (band_fixing.h): max-flow of the pairwise part, then the LP of the cells near
+// its surface with every other cell fixed. Sizes reported are those of the full LP (`full`) and,
+// in the backend name, the band's own backend.
+LabelingResult SolveInBand(const EnergyInput& energy, const LabelingOptions& options,
+                           const RunContext& ctx, const LabelingResult& full) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<std::uint8_t> pairwise = PairwiseLabels(energy, ctx);
+  const EnergyInput banded = FixCellsOutsideBand(energy, pairwise, options.band_rings);
+  LabelingOptions inner = options;
+  inner.backend = "auto";
+  inner.auto_band_min_columns = std::numeric_limits<std::size_t>::max();
+  LabelingResult result = Solve(banded, inner, ctx);
+  result.backend = "band+" + result.backend;
+  result.band_lp_columns = result.lp_columns;
+  result.lp_columns = full.lp_columns;
+  result.lp_rows = full.lp_rows;
+  result.lp_nonzeros = full.lp_nonzeros;
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
 }
 
 LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
@@ -37,6 +65,7 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
   result.lp_nonzeros = lp.NumNonzeros();
   result.backend = ResolveBackend(options.backend, reduced, lp.NumColumns(), options);
   ctx.ThrowIfCancelled(kStage);
+  if (result.backend == "band") return SolveInBand(energy, options, ctx, result);
 
   LpSolution solution;
   if (result.backend == "clp") {
@@ -80,10 +109,11 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
 
 Status LabelingOptions::Validate() const {
   if (backend != "auto" && backend != "clp" && backend != "clp-barrier" && backend != "maxflow" &&
-      backend != "pdhg") {
+      backend != "pdhg" && backend != "band") {
     return InvalidOption("backend: '" + backend +
-                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg");
+                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band");
   }
+  if (band_rings < 0 || band_rings > 16) return InvalidOption("band_rings: must be in [0, 16]");
   if (!(clp_tolerance > 0.0 && clp_tolerance <= 1e-2)) {
     return InvalidOption("clp_tolerance: must be in (0, 1e-2]");
   }

@@ -12,8 +12,13 @@
 ///               restarts to the average, adaptive primal weight); SpMV in fixed chunks with oneTBB
 ///               so the result is identical for any thread count. Approximate optimum (relative
 ///               tolerance pdhg_tolerance), fast on large complexes.
-///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
-///               else "pdhg" (see docs/design/lp_backend.md for the measurements).
+///  - "band":    for large complexes (band_fixing.h): exact max-flow of the unary and pairwise
+///               terms, then the LP ("auto" among clp/pdhg) of the cells near that surface only,
+///               every other cell fixed at its max-flow label. A heuristic: not the full LP's
+///               optimum in general.
+///  - "auto":    "maxflow" when it is exact, else "band" above auto_band_min_columns LP columns,
+///               else "clp" up to auto_clp_max_columns LP columns, else "pdhg" (see
+///               docs/design/lp_backend.md for the measurements).
 ///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
 ///
 /// Rounding: label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
@@ -51,6 +56,11 @@ struct LabelingOptions {
   /// parity terms Clp's dual simplex grows about cubically (0.19 s CPU at 3.8k columns, 3.4 s at
   /// 12.6k, 151 s at 42k) while pdhg stays below 0.4 s up to 12.6k (docs/design/lp_backend.md).
   std::size_t auto_clp_max_columns = 10000;
+  /// "auto" uses the band strategy above this many LP columns: the full LP of Andalusian's
+  /// complex (3e5 cells, millions of columns) did not converge with pdhg in 26 min.
+  std::size_t auto_band_min_columns = 1000000;
+  /// Growth steps of the band through shared parity groups (edges and vertices); [0, 16].
+  int band_rings = 1;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
   double time_limit_seconds = 0.0;
   /// Sweeps of local search after rounding (each free cell, in id order, flips when that lowers
@@ -76,6 +86,8 @@ struct LabelingResult {
   double labels_objective = 0.0;
   /// Energy of the rounded labels before local search.
   double rounded_objective = 0.0;
+  /// LP columns of the band's own LP ("band" backend only; 0 otherwise).
+  std::size_t band_lp_columns = 0;
   /// Cells flipped by local search.
   std::size_t local_search_flips = 0;
   /// "optimal", or the backend's own word for a successful stop.

@@ -340,9 +340,10 @@ class Pdhg {
       ax.swap(ax_next);
       s_.at.Multiply(y, aty, &aty_sum);
       ++since_restart;
+      // Cancellation is polled every iteration (one iteration of a large LP takes 50-150 ms).
+      LINESURF_THROW_IF(ctx_.ShouldStop(), kCancelled, kStage, "pdhg cancelled by the host");
       if (it % kCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
 
-      LINESURF_THROW_IF(ctx_.ShouldStop(), kCancelled, kStage, "pdhg cancelled by the host");
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       LINESURF_THROW_IF(options_.time_limit_seconds > 0.0 && elapsed > options_.time_limit_seconds,

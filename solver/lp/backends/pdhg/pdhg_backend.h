@@ -14,7 +14,7 @@ namespace linesurf::solver {
 
 /// Stops when relative primal residual, dual residual and duality gap are all below
 /// options.pdhg_tolerance; throws kSolverFailed at options.pdhg_max_iterations or the time limit,
-/// kCancelled when ctx.ShouldStop() (polled every restart-check period).
+/// kCancelled when ctx.ShouldStop() (polled every iteration).
 [[nodiscard]] LpSolution SolveLpWithPdhg(const LpModel& lp, const LabelingOptions& options,
                                          const RunContext& ctx);
 
