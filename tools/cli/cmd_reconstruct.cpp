@@ -176,7 +176,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
       ->capture_default_str();
   sub->add_flag("--structural-as-textural", e.structural_as_textural,
                 "Ablation: structural segments count as two textural ones");
-  sub->add_option("--solver", o.solver.backend, "LP backend: clp, maxflow, pdhg or auto")
+  sub->add_option("--solver", o.solver.backend, "LP backend: clp, maxflow, pdhg, band or auto")
       ->capture_default_str();
   sub->add_option("--time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)")
       ->capture_default_str();
