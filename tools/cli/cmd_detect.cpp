@@ -12,6 +12,7 @@
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/detection_options.h"
 
 namespace linesurf::cli {
 namespace {
@@ -125,19 +126,7 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
       ->check(CLI::ExistingFile);
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
-  sub->add_option("--epsilon", args->options.epsilon, "Inlier tolerance eps, scene units")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--relative-epsilon", args->relative_epsilon,
-                  "eps as a fraction of the scene diagonal (overrides --epsilon)");
-  sub->add_option("--iterations", args->options.iterations, "Max candidate pairs per plane")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--max-planes", args->options.max_planes, "Max number of planes")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--min-support", args->options.min_support, "Min inlier segments per plane")
-      ->capture_default_str();
+  AddDetectionOptions(*sub, args->options, args->relative_epsilon);
   sub->add_option("--seed", args->options.seed, "Random seed")->capture_default_str();
   sub->add_option("--vg", args->vg, "Also write the planes as PolyFit/abspy vertex groups");
   cmd.run = [&common, args] { return RunDetect(common, *args); };
