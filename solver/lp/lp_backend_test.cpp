@@ -276,5 +276,41 @@ TEST(SolveLabeling, PdhgIsCloseToClpOnAGridEnergy) {
   EXPECT_GE(pdhg.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
 }
 
+TEST(SolveLabeling, BandIsAnUpperBoundOfTheFullLpAndKeepsFixes) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 30;
+    spec.num_pairs = 50;
+    spec.num_structural = 8;
+    spec.num_parity = 10;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const LabelingResult clp = MustSolve(e, "clp");
+    const LabelingResult band = MustSolve(e, "band");
+    EXPECT_EQ(band.backend.rfind("band+", 0), 0u) << band.backend;
+    EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance) << seed;
+    EXPECT_NEAR(band.labels_objective, e.Evaluate(std::span<const std::uint8_t>(band.labels)),
+                kObjectiveTolerance);
+    for (std::size_t c = 0; c < e.NumCells(); ++c) {
+      const CellFix f = e.fixed[CellId(c)];
+      if (f != CellFix::kFree) {
+        EXPECT_EQ(band.labels[c], f == CellFix::kFull ? 1 : 0);
+      }
+    }
+  }
+}
+
+TEST(SolveLabeling, BandOnAGridEnergyIsCloseToTheFullLp) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 10;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult clp = MustSolve(e, "clp");
+  const LabelingResult band = MustSolve(e, "band");
+  EXPECT_LT(band.band_lp_columns, clp.lp_columns);
+  EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
+  // The labels of the band are within 5 % of the energy of the full LP's labels.
+  EXPECT_LE(band.labels_objective, 1.05 * clp.labels_objective);
+}
+
 }  // namespace
 }  // namespace linesurf::solver
