@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -15,6 +16,7 @@
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
+#include "engine/detect/detection_blocks.h"
 #include "engine/detect/plane_fusion.h"
 #include "engine/detect/segment_bvh.h"
 #include "engine/detect/segment_geometry.h"
@@ -33,6 +35,8 @@ constexpr std::size_t kCandidateGrain = 4;
 constexpr double kMinSampleLengthOverEps = 1e-6;
 /// A fit whose two largest spreads differ by more than this ratio is collinear: keep the hint.
 constexpr double kCollinearEigenRatio = 1e-12;
+/// Tags the random streams of per-block detection (block b draws from (seed, kBlockStream, b)).
+constexpr std::uint64_t kBlockStream = 0xb10c0000b10c0000ULL;
 
 double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
 
@@ -70,6 +74,8 @@ Status PlaneDetectionOptions::Validate() const {
   if (near_window < 1) return Invalid("near_window", ">= 1");
   if (!(near_fraction >= 0.0 && near_fraction <= 1.0)) return Invalid("near_fraction", "in [0, 1]");
   if (max_refit_iterations < 0) return Invalid("max_refit_iterations", ">= 0");
+  if (!(block_size >= 0.0) || !std::isfinite(block_size)) return Invalid("block_size", ">= 0");
+  if (!(block_halo >= 0.0 && block_halo < 0.5)) return Invalid("block_halo", "in [0, 0.5)");
   return {};
 }
 
@@ -120,10 +126,14 @@ struct CandidateResult {
 /// One run of the multi-support RANSAC over a scene (working state of DetectPlanes).
 class Detector {
  public:
-  Detector(const Scene& scene, const PlaneDetectionOptions& options, double epsilon,
-           const RunContext& ctx)
-      : segments_(scene.segments.raw()),
+  /// `seed` replaces options.seed (per-block streams); `report_progress` is off when blocks run
+  /// concurrently (they report per block instead).
+  Detector(std::span<const Segment3> segments, const PlaneDetectionOptions& options,
+           double epsilon, std::uint64_t seed, bool report_progress, const RunContext& ctx)
+      : segments_(segments),
         options_(options),
+        seed_(seed),
+        report_progress_(report_progress),
         ctx_(ctx),
         epsilon_(epsilon),
         slab_(options.distance == SegmentDistance::kMeanEndpoint ? 2.0 * epsilon : epsilon),
@@ -147,7 +157,9 @@ class Detector {
   void ExtractAll(PlaneDetectionStats& stats) {
     while (static_cast<std::int32_t>(planes_.size()) < options_.max_planes) {
       ctx_.ThrowIfCancelled(kStage);
-      ctx_.ReportProgress(kStage, static_cast<double>(planes_.size()) / options_.max_planes);
+      if (report_progress_) {
+        ctx_.ReportProgress(kStage, static_cast<double>(planes_.size()) / options_.max_planes);
+      }
       const std::vector<SegmentId> pool = SamplingPool();
       if (pool.size() < 2) break;
       const std::optional<CandidateResult> best = SearchPlane(pool, stats);
@@ -168,7 +180,6 @@ class Detector {
       for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
       planes_.push_back({plane, std::move(inliers)});
     }
-    ctx_.ReportProgress(kStage, 1.0);
   }
 
   std::vector<detect::SupportedPlane>& planes() { return planes_; }
@@ -262,7 +273,7 @@ class Detector {
   CandidateResult RandomCandidate(const std::vector<SegmentId>& pool, std::size_t plane_index,
                                   std::int64_t k) const {
     CandidateResult result;
-    Rng rng(MixSeed(options_.seed, RngStage::kDetect, plane_index, static_cast<std::uint64_t>(k)));
+    Rng rng(MixSeed(seed_, RngStage::kDetect, plane_index, static_cast<std::uint64_t>(k)));
     const auto& order = bvh_.Order();
     const auto window = static_cast<std::int64_t>(options_.near_window);
     const auto n = static_cast<std::int64_t>(order.size());
@@ -370,8 +381,10 @@ class Detector {
     return best;
   }
 
-  const std::vector<Segment3>& segments_;
+  std::span<const Segment3> segments_;
   const PlaneDetectionOptions& options_;
+  std::uint64_t seed_;
+  bool report_progress_;
   const RunContext& ctx_;
   double epsilon_;
   double slab_;
@@ -399,6 +412,70 @@ void OrientPlane(const Scene& scene, const std::vector<SegmentId>& inliers, Plan
     }
   }
   if (votes < 0) plane.normal = -plane.normal;
+}
+
+/// The blocks of per-block detection; one block holding every segment when block_size is 0.
+std::vector<DetectionBlock> SplitIntoBlocks(const Scene& scene,
+                                            const PlaneDetectionOptions& options) {
+  if (options.block_size > 0.0) {
+    return AssignDetectionBlocks(scene.segments.raw(), options.block_size,
+                                 options.block_halo * options.block_size);
+  }
+  DetectionBlock all;
+  all.segments.reserve(scene.segments.size());
+  for (std::size_t i = 0; i < scene.segments.size(); ++i) all.segments.emplace_back(i);
+  return {std::move(all)};
+}
+
+/// Runs the RANSAC of every block (blocks in parallel, each deterministic) and returns their
+/// planes in block order, inliers as scene segment ids. A single block keeps options.seed, so
+/// it reproduces the monolithic method exactly; block b of several draws from its own stream.
+std::vector<SupportedPlane> DetectInBlocks(const Scene& scene,
+                                           const std::vector<DetectionBlock>& blocks,
+                                           const PlaneDetectionOptions& options, double epsilon,
+                                           const RunContext& ctx, PlaneDetectionStats& stats) {
+  const bool single = blocks.size() == 1;
+  std::vector<std::vector<SupportedPlane>> found(blocks.size());
+  std::vector<PlaneDetectionStats> block_stats(blocks.size());
+  std::atomic<std::size_t> done{0};
+  tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
+    const std::vector<SegmentId>& ids = blocks[b].segments;
+    std::vector<Segment3> local(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) local[i] = scene.segments[ids[i]];
+    const std::uint64_t seed =
+        single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, b);
+    Detector detector(local, options, epsilon, seed, single, ctx);
+    detector.ExtractAll(block_stats[b]);
+    found[b] = std::move(detector.planes());
+    for (SupportedPlane& plane : found[b]) {
+      for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
+    }
+    ctx.ReportProgress(kStage, static_cast<double>(++done) / static_cast<double>(blocks.size()));
+  });
+  std::vector<SupportedPlane> planes;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    stats.candidates_evaluated += block_stats[b].candidates_evaluated;
+    stats.failed_draws += block_stats[b].failed_draws;
+    for (SupportedPlane& plane : found[b]) planes.push_back(std::move(plane));
+  }
+  return planes;
+}
+
+/// Keeps the `max_planes` planes of largest support (ties: lower index), in their order.
+void KeepLargestPlanes(std::size_t max_planes, std::vector<SupportedPlane>& planes) {
+  if (planes.size() <= max_planes) return;
+  std::vector<std::size_t> order(planes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return planes[a].inliers.size() > planes[b].inliers.size();
+  });
+  std::vector<bool> keep(planes.size(), false);
+  for (std::size_t i = 0; i < max_planes; ++i) keep[order[i]] = true;
+  std::vector<SupportedPlane> kept;
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    if (keep[i]) kept.push_back(std::move(planes[i]));
+  }
+  planes = std::move(kept);
 }
 
 double SceneDiagonal(const Scene& scene) {
@@ -432,12 +509,12 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                         "relative_epsilon needs a scene of non-zero extent");
     }
     result.stats.epsilon = epsilon;
+    const std::vector<detect::DetectionBlock> blocks = detect::SplitIntoBlocks(scene, options);
     std::vector<detect::SupportedPlane> planes;
     RunInArena(ctx, [&] {
-      detect::Detector detector(scene, options, epsilon, ctx);
-      detector.ExtractAll(result.stats);
-      planes = std::move(detector.planes());
+      planes = detect::DetectInBlocks(scene, blocks, options, epsilon, ctx, result.stats);
     });
+    result.stats.blocks = static_cast<std::int64_t>(blocks.size());
     result.stats.planes_before_fusion = static_cast<std::int32_t>(planes.size());
     const auto fusion_start = std::chrono::steady_clock::now();
     detect::FusionParameters fusion;
@@ -446,7 +523,14 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     fusion.max_angle_rad = DegToRad(options.theta_fusion_deg);
     fusion.min_shared_fraction = options.p_fusion;
     fusion.distance = options.distance;
+    const bool several_blocks = blocks.size() > 1;
+    if (several_blocks) fusion.max_gap = options.block_halo * options.block_size;
     result.stats.merges = detect::FusePlanes(scene.segments.raw(), fusion, planes);
+    if (several_blocks) {
+      result.stats.memberships_dropped =
+          detect::LimitMemberships(scene.segments.size(), options.min_support, planes);
+      detect::KeepLargestPlanes(static_cast<std::size_t>(options.max_planes), planes);
+    }
     result.stats.seconds_fusion =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - fusion_start).count();
     result.stats.planes_after_fusion = static_cast<std::int32_t>(planes.size());

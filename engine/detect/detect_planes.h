@@ -76,6 +76,16 @@ struct PlaneDetectionOptions {
   /// Ablation: segments already on a plane are tested by their plane distance instead of their
   /// distance to the crease line P ∩ P'.
   bool no_structural_condition = false;
+  /// Per-block detection (DESIGN section 3): when > 0, the scene is cut into cubes of this side
+  /// (scene units); RANSAC runs per cube on the segments whose midpoint lies in the cube dilated
+  /// by the halo, cubes in parallel, then a global fusion merges the pieces of one plane found
+  /// in neighbouring cubes and re-applies the at-most-2 rule. Work grows about linearly with the
+  /// scene; `max_planes` then bounds each cube and the final count (largest supports kept).
+  /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
+  /// gives exactly the monolithic result.
+  double block_size = 0.0;
+  /// Halo of a block, as a fraction of block_size ([0, 0.5)).
+  double block_halo = 0.1;
   /// Seed of all random streams; same input + options + seed => same output, any thread count.
   std::uint64_t seed = 0;
 
@@ -100,6 +110,10 @@ struct PlaneDetectionStats {
   std::int64_t num_l2 = 0;
   std::int64_t candidates_evaluated = 0;
   std::int64_t failed_draws = 0;
+  /// Blocks detected (1 without per-block detection) and memberships dropped by the at-most-2
+  /// rule after merging the blocks' planes.
+  std::int64_t blocks = 0;
+  std::int64_t memberships_dropped = 0;
   double epsilon = 0.0;  ///< the eps actually used (scene units)
   double seconds = 0.0;
   double seconds_fusion = 0.0;

@@ -5,6 +5,9 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/core/rng.h"
 
@@ -173,8 +176,8 @@ TEST(DetectPlanes, StructuralConditionKeepsNearlyParallelPlanesFromStealingSegme
   EXPECT_GT(stolen(ablation), 0);
 }
 
-TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
-  // Enough segments for random (non-exhaustive) sampling: cubes on a grid with noise.
+// Eight noisy cubes on a grid 3 apart: enough segments for random (non-exhaustive) sampling.
+Scene CubeGrid() {
   Scene scene;
   scene.viewpoints.push_back(Vec3(50, 40, 30));
   for (int c = 0; c < 8; ++c) {
@@ -185,22 +188,86 @@ TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
       scene.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(0u)});
     }
   }
+  return scene;
+}
+
+void ExpectSameResult(const PlaneDetectionResult& a, const PlaneDetectionResult& b) {
+  ASSERT_EQ(a.planes.size(), b.planes.size());
+  for (std::size_t i = 0; i < a.planes.size(); ++i) {
+    const PlaneId p(i);
+    EXPECT_EQ(a.planes[p].normal, b.planes[p].normal) << i;
+    EXPECT_EQ(a.planes[p].point, b.planes[p].point) << i;
+    EXPECT_EQ(a.support[p].inliers, b.support[p].inliers) << i;
+  }
+  EXPECT_EQ(a.stats.candidates_evaluated, b.stats.candidates_evaluated);
+}
+
+PlaneDetectionOptions GridOptions() {
   PlaneDetectionOptions o;
   o.epsilon = 0.03;
   o.seed = 42;
-  const PlaneDetectionResult r1 = Detect(scene, o, 1);
-  ASSERT_GT(r1.planes.size(), 10u);
-  for (int threads : {2, 8}) {
-    const PlaneDetectionResult rn = Detect(scene, o, threads);
-    ASSERT_EQ(rn.planes.size(), r1.planes.size()) << threads;
-    for (std::size_t i = 0; i < r1.planes.size(); ++i) {
-      const PlaneId p(i);
-      EXPECT_EQ(rn.planes[p].normal, r1.planes[p].normal);
-      EXPECT_EQ(rn.planes[p].point, r1.planes[p].point);
-      EXPECT_EQ(rn.support[p].inliers, r1.support[p].inliers);
-    }
-    EXPECT_EQ(rn.stats.candidates_evaluated, r1.stats.candidates_evaluated);
+  return o;
+}
+
+TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
+  const Scene scene = CubeGrid();
+  for (const double block_size : {0.0, 2.0}) {  // whole scene, then blocks cutting the cubes
+    PlaneDetectionOptions o = GridOptions();
+    o.block_size = block_size;
+    const PlaneDetectionResult r1 = Detect(scene, o, 1);
+    ASSERT_GT(r1.planes.size(), 10u);
+    for (int threads : {2, 8}) ExpectSameResult(Detect(scene, o, threads), r1);
   }
+}
+
+TEST(DetectPlanes, OneBlockReproducesTheWholeSceneRun) {
+  const Scene scene = CubeGrid();
+  PlaneDetectionOptions one = GridOptions();
+  one.block_size = 100.0;  // larger than the scene
+  const PlaneDetectionResult r = Detect(scene, one);
+  EXPECT_EQ(r.stats.blocks, 1);
+  ExpectSameResult(r, Detect(scene, GridOptions()));
+}
+
+TEST(DetectPlanes, PerBlockDetectionFindsEveryCubeFaceAndKeepsTheAtMostTwoRule) {
+  const Scene scene = CubeGrid();
+  PlaneDetectionOptions o = GridOptions();
+  o.block_size = 2.5;  // cubes of side 2 on a grid of 3: most are cut, their planes found in pieces
+  o.block_halo = 0.3;
+  const PlaneDetectionResult r = Detect(scene, o);
+  EXPECT_GT(r.stats.blocks, 8);
+  EXPECT_GT(r.stats.merges, 0);
+  // The memberships and the planes' inlier lists agree, and nobody is on more than 2 planes.
+  std::vector<int> count(scene.segments.size(), 0);
+  for (std::size_t p = 0; p < r.planes.size(); ++p) {
+    EXPECT_GE(r.support[PlaneId(p)].inliers.size(), static_cast<std::size_t>(o.min_support));
+    for (const SegmentId s : r.support[PlaneId(p)].inliers) {
+      ++count[s.index()];
+      EXPECT_TRUE(r.memberships[s].Contains(PlaneId(p)));
+    }
+  }
+  for (std::size_t s = 0; s < count.size(); ++s) {
+    EXPECT_LE(count[s], 2);
+    EXPECT_EQ(count[s], r.memberships[SegmentId(s)].count);
+  }
+  // Each cube's six faces: one plane within 2 degrees and 2 eps of each face.
+  int faces = 0;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 centre(3.0 * (c % 4), 3.0 * (c / 4), 0.2 * c);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int side = -1; side <= 1; side += 2) {
+        const Vec3 on_face = centre + side * Vec3::Unit(axis);
+        const double min_cos = std::cos(2.0 * std::numbers::pi / 180.0);
+        bool found = false;
+        for (const Plane3& plane : r.planes) {
+          found = found || (std::abs(plane.normal[axis]) > min_cos &&
+                            std::abs(plane.SignedDistance(on_face)) < 2.0 * o.epsilon);
+        }
+        faces += found ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(faces, 48);
 }
 
 TEST(DetectPlanes, RelativeEpsilonScalesWithTheScene) {
@@ -224,9 +291,31 @@ TEST(DetectPlanes, RejectsInvalidOptionsAndEmptyInputGivesNoPlanes) {
   ASSERT_FALSE(bad.has_value());
   EXPECT_EQ(bad.error().code, ErrorCode::kInvalidOptions);
   EXPECT_NE(bad.error().message.find("epsilon"), std::string::npos);
+  using Setter = void (*)(PlaneDetectionOptions&);
+  const std::vector<std::pair<std::string, Setter>> bad_blocks = {
+      {"block_size", [](PlaneDetectionOptions& x) { x.block_size = -1.0; }},
+      {"block_size", [](PlaneDetectionOptions& x) { x.block_size = std::nan(""); }},
+      {"block_halo", [](PlaneDetectionOptions& x) { x.block_halo = 0.5; }}};
+  for (const auto& [field, set] : bad_blocks) {
+    PlaneDetectionOptions b;
+    set(b);
+    const auto r = DetectPlanes(Scene{}, b, ctx);
+    ASSERT_FALSE(r.has_value()) << field;
+    EXPECT_NE(r.error().message.find(field), std::string::npos) << r.error().message;
+  }
   const auto empty = DetectPlanes(Scene{}, PlaneDetectionOptions{}, ctx);
   ASSERT_TRUE(empty.has_value());
   EXPECT_TRUE(empty->planes.empty());
+}
+
+TEST(DetectPlanes, AbsurdlySmallBlocksAreRefusedWithAClearError) {
+  PlaneDetectionOptions o = GridOptions();
+  o.block_size = 1e-9;
+  RunContext ctx;
+  const auto r = DetectPlanes(CubeGrid(), o, ctx);
+  ASSERT_FALSE(r.has_value());
+  EXPECT_EQ(r.error().code, ErrorCode::kInvalidOptions);
+  EXPECT_NE(r.error().message.find("block_size"), std::string::npos) << r.error().message;
 }
 
 TEST(DetectPlanes, CancelStopsTheRun) {

@@ -13,9 +13,24 @@ namespace {
 
 struct FusionNode {
   SupportedPlane data;
+  Box3 box;  ///< of the inliers' endpoints
   std::size_t key = 0;  ///< output position: the smallest input index among its parents
   bool alive = true;
 };
+
+Box3 InlierBox(std::span<const Segment3> segments, const std::vector<SegmentId>& inliers) {
+  Box3 box;
+  for (const SegmentId s : inliers) {
+    box.Extend(segments[s.index()].p1);
+    box.Extend(segments[s.index()].p2);
+  }
+  return box;
+}
+
+/// Largest per-axis gap between two boxes (0 when they overlap).
+double BoxGap(const Box3& a, const Box3& b) {
+  return (a.min - b.max).cwiseMax(b.min - a.max).cwiseMax(0.0).maxCoeff();
+}
 
 double AngleBetween(const Plane3& a, const Plane3& b) {
   return std::acos(std::min(1.0, std::abs(a.normal.dot(b.normal))));
@@ -30,9 +45,12 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
 
 /// Angle of a mergeable pair, or a negative value when the pair does not qualify.
 double PairAngle(std::span<const Segment3> segments, const FusionParameters& params,
-                 const SupportedPlane& a, const SupportedPlane& b) {
+                 const FusionNode& node_a, const FusionNode& node_b) {
+  const SupportedPlane& a = node_a.data;
+  const SupportedPlane& b = node_b.data;
   const double angle = AngleBetween(a.plane, b.plane);
   if (angle >= params.max_angle_rad) return -1.0;
+  if (BoxGap(node_a.box, node_b.box) > params.max_gap) return -1.0;
   const std::size_t smaller = std::min(a.inliers.size(), b.inliers.size());
   const double needed = params.min_shared_fraction * static_cast<double>(smaller);
   std::size_t shared = 0;
@@ -53,13 +71,14 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
   std::vector<FusionNode> nodes;
   nodes.reserve(2 * planes.size());
   for (std::size_t i = 0; i < planes.size(); ++i) {
-    nodes.push_back({std::move(planes[i]), i, true});
+    const Box3 box = InlierBox(segments, planes[i].inliers);
+    nodes.push_back({std::move(planes[i]), box, i, true});
   }
   // Pending pairs ordered by (angle, i, j): a total order, so the greedy pass is deterministic.
   std::set<std::tuple<double, std::size_t, std::size_t>> queue;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     for (std::size_t j = i + 1; j < nodes.size(); ++j) {
-      const double angle = PairAngle(segments, params, nodes[i].data, nodes[j].data);
+      const double angle = PairAngle(segments, params, nodes[i], nodes[j]);
       if (angle >= 0.0) queue.emplace(angle, i, j);
     }
   }
@@ -78,12 +97,15 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
     nodes[i].alive = false;
     nodes[j].alive = false;
     const std::size_t key = std::min(nodes[i].key, nodes[j].key);
-    nodes.push_back({SupportedPlane{plane, std::move(merged)}, key, true});
+    Box3 box = nodes[i].box;
+    box.Extend(nodes[j].box.min);
+    box.Extend(nodes[j].box.max);
+    nodes.push_back({SupportedPlane{plane, std::move(merged)}, box, key, true});
     ++merges;
     const std::size_t fresh = nodes.size() - 1;
     for (std::size_t k = 0; k < fresh; ++k) {
       if (!nodes[k].alive) continue;
-      const double a = PairAngle(segments, params, nodes[k].data, nodes[fresh].data);
+      const double a = PairAngle(segments, params, nodes[k], nodes[fresh]);
       if (a >= 0.0) queue.emplace(a, k, fresh);
     }
   }
@@ -96,6 +118,32 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
   planes.clear();
   for (FusionNode* node : alive) planes.push_back(std::move(node->data));
   return merges;
+}
+
+std::int64_t LimitMemberships(std::size_t num_segments, std::int32_t min_support,
+                              std::vector<SupportedPlane>& planes) {
+  std::vector<std::size_t> order(planes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return planes[a].inliers.size() > planes[b].inliers.size();
+  });
+  std::vector<std::uint8_t> count(num_segments, 0);
+  std::int64_t removed = 0;
+  for (const std::size_t p : order) {
+    std::vector<SegmentId>& inliers = planes[p].inliers;
+    const auto kept = std::remove_if(inliers.begin(), inliers.end(),
+                                     [&](SegmentId s) { return count[s.index()] >= 2; });
+    removed += inliers.end() - kept;
+    inliers.erase(kept, inliers.end());
+    if (inliers.size() < static_cast<std::size_t>(min_support)) {
+      removed += static_cast<std::int64_t>(inliers.size());
+      inliers.clear();  // the plane goes: its segments stay free for the next planes
+      continue;
+    }
+    for (const SegmentId s : inliers) ++count[s.index()];
+  }
+  std::erase_if(planes, [](const SupportedPlane& p) { return p.inliers.empty(); });
+  return removed;
 }
 
 }  // namespace linesurf::detect

@@ -100,6 +100,11 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
     if (Status s = WriteVertexGroups(scene, args.vg); !s) return ReportError(s.error());
   }
   if (!common.quiet) {
+    if (st.blocks > 1) {
+      std::fprintf(stderr, "detect: %lld blocks; %lld memberships dropped by the at-most-2 rule\n",
+                   static_cast<long long>(st.blocks),
+                   static_cast<long long>(st.memberships_dropped));
+    }
     std::fprintf(stderr,
                  "detect: %zu segments, eps %.6g%s; %d planes (%d before fusion, %d merges)%s\n"
                  "detect: segments on 0/1/2 planes: %lld / %lld / %lld; %lld candidates, %lld "

@@ -17,6 +17,13 @@ void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
       ->check(CLI::PositiveNumber);
   sub.add_option("--min-support", options.min_support, "Min inlier segments per plane")
       ->capture_default_str();
+  sub.add_option("--block-size", options.block_size,
+                 "Per-block detection: cube side, scene units (0 = whole scene at once)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  sub.add_option("--block-halo", options.block_halo, "Halo of a block, fraction of its side")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.49));
 }
 
 }  // namespace linesurf::cli

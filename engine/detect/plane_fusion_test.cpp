@@ -1,0 +1,62 @@
+#include "engine/detect/plane_fusion.h"
+
+#include <gtest/gtest.h>
+
+namespace linesurf::detect {
+namespace {
+
+std::vector<SegmentId> Ids(std::initializer_list<int> ids) {
+  std::vector<SegmentId> out;
+  for (const int i : ids) out.emplace_back(static_cast<std::uint32_t>(i));
+  return out;
+}
+
+TEST(LimitMemberships, LargerPlanesKeepTheirSegmentsAndSmallLeftoversGo) {
+  std::vector<SupportedPlane> planes(4);
+  planes[0].inliers = Ids({0, 1, 2, 3});        // 4: visited third; 0 and 1 are taken twice,
+                                                // 2 and 3 are too few: the plane goes
+  planes[1].inliers = Ids({0, 1, 2, 4, 5, 6});  // 6: visited first, keeps all
+  planes[2].inliers = Ids({0, 1, 7, 8, 9});     // 5: visited second, keeps all
+  planes[3].inliers = Ids({2, 3, 4});           // 3: 2, 3 and 4 are still free enough
+  const std::int64_t dropped = LimitMemberships(10, 3, planes);
+  ASSERT_EQ(planes.size(), 3u);
+  EXPECT_EQ(planes[0].inliers, Ids({0, 1, 2, 4, 5, 6}));
+  EXPECT_EQ(planes[1].inliers, Ids({0, 1, 7, 8, 9}));
+  EXPECT_EQ(planes[2].inliers, Ids({2, 3, 4}));
+  EXPECT_EQ(dropped, 4);  // plane 0's four memberships
+}
+
+TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
+  // Two coplanar pieces of the plane z = 0, 10 apart along x.
+  std::vector<Segment3> segments;
+  for (int piece = 0; piece < 2; ++piece) {
+    for (int i = 0; i < 4; ++i) {
+      const double x = 10.0 * piece + 0.5 * i;
+      segments.push_back({Vec3(x, 0, 0), Vec3(x + 0.3, 1, 0)});
+    }
+  }
+  auto pieces = [] {
+    std::vector<SupportedPlane> planes(2);
+    for (int p = 0; p < 2; ++p) {
+      planes[p].plane.normal = Vec3::UnitZ();
+      planes[p].plane.point = Vec3(10.0 * p, 0, 0);
+      planes[p].inliers = Ids({4 * p, 4 * p + 1, 4 * p + 2, 4 * p + 3});
+    }
+    return planes;
+  };
+  FusionParameters params;
+  params.epsilon = 0.02;
+  params.epsilon_fusion = 0.06;
+  params.max_angle_rad = 0.17;
+  params.min_shared_fraction = 0.2;
+  std::vector<SupportedPlane> unbounded = pieces();
+  EXPECT_EQ(FusePlanes(segments, params, unbounded), 1);
+  EXPECT_EQ(unbounded.size(), 1u);
+  params.max_gap = 1.0;
+  std::vector<SupportedPlane> local = pieces();
+  EXPECT_EQ(FusePlanes(segments, params, local), 0);
+  EXPECT_EQ(local.size(), 2u);
+}
+
+}  // namespace
+}  // namespace linesurf::detect
