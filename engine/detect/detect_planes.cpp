@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
+#include "engine/detect/collinear_groups.h"
 #include "engine/detect/detection_blocks.h"
 #include "engine/detect/plane_fusion.h"
 #include "engine/detect/segment_bvh.h"
@@ -74,6 +76,9 @@ Status PlaneDetectionOptions::Validate() const {
   if (near_window < 1) return Invalid("near_window", ">= 1");
   if (!(near_fraction >= 0.0 && near_fraction <= 1.0)) return Invalid("near_fraction", "in [0, 1]");
   if (max_refit_iterations < 0) return Invalid("max_refit_iterations", ">= 0");
+  if (!(collinear_tolerance >= 0.0 && collinear_tolerance <= 0.5)) {
+    return Invalid("collinear_tolerance", "in [0, 0.5]");
+  }
   if (!(block_size >= 0.0) || !std::isfinite(block_size)) return Invalid("block_size", ">= 0");
   if (!(block_halo >= 0.0 && block_halo < 0.5)) return Invalid("block_halo", "in [0, 0.5)");
   return {};
@@ -414,23 +419,50 @@ void OrientPlane(const Scene& scene, const std::vector<SegmentId>& inliers, Plan
   if (votes < 0) plane.normal = -plane.normal;
 }
 
-/// The blocks of per-block detection; one block holding every segment when block_size is 0.
-std::vector<DetectionBlock> SplitIntoBlocks(const Scene& scene,
+/// The lines to detect on: collinear duplicates merged, or every segment on its own.
+CollinearGroups LinesToDetect(const Scene& scene, const PlaneDetectionOptions& options,
+                              double epsilon) {
+  if (options.collinear_tolerance > 0.0) {
+    return GroupCollinearSegments(scene.segments.raw(), options.collinear_tolerance * epsilon);
+  }
+  CollinearGroups groups;
+  groups.lines = scene.segments.raw();
+  for (std::size_t i = 0; i < scene.segments.size(); ++i) {
+    groups.members.AddRow(std::array<SegmentId, 1>{SegmentId(i)});
+  }
+  return groups;
+}
+
+/// The blocks of per-block detection; one block holding every line when block_size is 0.
+std::vector<DetectionBlock> SplitIntoBlocks(std::span<const Segment3> lines,
                                             const PlaneDetectionOptions& options) {
   if (options.block_size > 0.0) {
-    return AssignDetectionBlocks(scene.segments.raw(), options.block_size,
+    return AssignDetectionBlocks(lines, options.block_size,
                                  options.block_halo * options.block_size);
   }
   DetectionBlock all;
-  all.segments.reserve(scene.segments.size());
-  for (std::size_t i = 0; i < scene.segments.size(); ++i) all.segments.emplace_back(i);
+  all.segments.reserve(lines.size());
+  for (std::size_t i = 0; i < lines.size(); ++i) all.segments.emplace_back(i);
   return {std::move(all)};
+}
+
+/// Replaces every plane's inlier lines by their member segments (ascending).
+void ExpandToSegments(const CollinearGroups& groups, std::vector<SupportedPlane>& planes) {
+  for (SupportedPlane& plane : planes) {
+    std::vector<SegmentId> segments;
+    for (const SegmentId line : plane.inliers) {
+      const auto members = groups.members[line];
+      segments.insert(segments.end(), members.begin(), members.end());
+    }
+    std::sort(segments.begin(), segments.end());
+    plane.inliers = std::move(segments);
+  }
 }
 
 /// Runs the RANSAC of every block (blocks in parallel, each deterministic) and returns their
 /// planes in block order, inliers as scene segment ids. A single block keeps options.seed, so
 /// it reproduces the monolithic method exactly; block b of several draws from its own stream.
-std::vector<SupportedPlane> DetectInBlocks(const Scene& scene,
+std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
                                            const std::vector<DetectionBlock>& blocks,
                                            const PlaneDetectionOptions& options, double epsilon,
                                            const RunContext& ctx, PlaneDetectionStats& stats) {
@@ -441,7 +473,7 @@ std::vector<SupportedPlane> DetectInBlocks(const Scene& scene,
   tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
     const std::vector<SegmentId>& ids = blocks[b].segments;
     std::vector<Segment3> local(ids.size());
-    for (std::size_t i = 0; i < ids.size(); ++i) local[i] = scene.segments[ids[i]];
+    for (std::size_t i = 0; i < ids.size(); ++i) local[i] = lines[ids[i].index()];
     const std::uint64_t seed =
         single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, b);
     Detector detector(local, options, epsilon, seed, single, ctx);
@@ -509,10 +541,13 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                         "relative_epsilon needs a scene of non-zero extent");
     }
     result.stats.epsilon = epsilon;
-    const std::vector<detect::DetectionBlock> blocks = detect::SplitIntoBlocks(scene, options);
+    const detect::CollinearGroups groups = detect::LinesToDetect(scene, options, epsilon);
+    const std::span<const Segment3> lines = groups.lines;
+    result.stats.lines = static_cast<std::int64_t>(lines.size());
+    const std::vector<detect::DetectionBlock> blocks = detect::SplitIntoBlocks(lines, options);
     std::vector<detect::SupportedPlane> planes;
     RunInArena(ctx, [&] {
-      planes = detect::DetectInBlocks(scene, blocks, options, epsilon, ctx, result.stats);
+      planes = detect::DetectInBlocks(lines, blocks, options, epsilon, ctx, result.stats);
     });
     result.stats.blocks = static_cast<std::int64_t>(blocks.size());
     result.stats.planes_before_fusion = static_cast<std::int32_t>(planes.size());
@@ -525,12 +560,13 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     fusion.distance = options.distance;
     const bool several_blocks = blocks.size() > 1;
     if (several_blocks) fusion.max_gap = options.block_halo * options.block_size;
-    result.stats.merges = detect::FusePlanes(scene.segments.raw(), fusion, planes);
+    result.stats.merges = detect::FusePlanes(lines, fusion, planes);
     if (several_blocks) {
       result.stats.memberships_dropped =
-          detect::LimitMemberships(scene.segments.size(), options.min_support, planes);
+          detect::LimitMemberships(lines.size(), options.min_support, planes);
       detect::KeepLargestPlanes(static_cast<std::size_t>(options.max_planes), planes);
     }
+    detect::ExpandToSegments(groups, planes);
     result.stats.seconds_fusion =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - fusion_start).count();
     result.stats.planes_after_fusion = static_cast<std::int32_t>(planes.size());

@@ -76,6 +76,12 @@ struct PlaneDetectionOptions {
   /// Ablation: segments already on a plane are tested by their plane distance instead of their
   /// distance to the crease line P ∩ P'.
   bool no_structural_condition = false;
+  /// Segments on one infinite line (every endpoint within collinear_tolerance x eps of the
+  /// other's line), such as the per-camera parts of one 3D line in the reference's residual
+  /// inputs, are detected as one line (the span of its parts) and all get its planes: one
+  /// physical line counts once, as in the reference RANSAC, which ran before the split. [0, 0.5];
+  /// 0 = every segment on its own.
+  double collinear_tolerance = 1e-3;
   /// Per-block detection (DESIGN section 3): when > 0, the scene is cut into cubes of this side
   /// (scene units); RANSAC runs per cube on the segments whose midpoint lies in the cube dilated
   /// by the halo, cubes in parallel, then a global fusion merges the pieces of one plane found
@@ -110,6 +116,8 @@ struct PlaneDetectionStats {
   std::int64_t num_l2 = 0;
   std::int64_t candidates_evaluated = 0;
   std::int64_t failed_draws = 0;
+  /// Distinct lines detected on (segments after merging collinear duplicates).
+  std::int64_t lines = 0;
   /// Blocks detected (1 without per-block detection) and memberships dropped by the at-most-2
   /// rule after merging the blocks' planes.
   std::int64_t blocks = 0;

@@ -100,6 +100,10 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
     if (Status s = WriteVertexGroups(scene, args.vg); !s) return ReportError(s.error());
   }
   if (!common.quiet) {
+    if (st.lines < static_cast<std::int64_t>(scene.segments.size())) {
+      std::fprintf(stderr, "detect: collinear parts merged: %lld distinct lines detected on\n",
+                   static_cast<long long>(st.lines));
+    }
     if (st.blocks > 1) {
       std::fprintf(stderr, "detect: %lld blocks; %lld memberships dropped by the at-most-2 rule\n",
                    static_cast<long long>(st.blocks),

@@ -17,6 +17,10 @@ void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
       ->check(CLI::PositiveNumber);
   sub.add_option("--min-support", options.min_support, "Min inlier segments per plane")
       ->capture_default_str();
+  sub.add_option("--collinear-tolerance", options.collinear_tolerance,
+                 "Segments on one line within this x eps are detected as one (0 = off)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.5));
   sub.add_option("--block-size", options.block_size,
                  "Per-block detection: cube side, scene units (0 = whole scene at once)")
       ->capture_default_str()
