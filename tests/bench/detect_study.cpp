@@ -21,32 +21,11 @@
 #include "engine/detect/detect_planes.h"
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
+#include "tools/eval/evaluate_planes.h"
 #include "tools/gen/synthesize.h"
 
 namespace linesurf {
 namespace {
-
-/// True planes (of `truth`) whose supporting segments all lie in the inliers of one detected
-/// plane.
-int FacesHeld(const Scene& truth, const PlaneDetectionResult& r) {
-  int found = 0;
-  for (std::size_t p = 0; p < truth.planes.size(); ++p) {
-    std::vector<SegmentId> members;
-    for (std::size_t s = 0; s < truth.memberships.size(); ++s) {
-      if (truth.memberships[SegmentId(s)].Contains(PlaneId(p))) members.emplace_back(s);
-    }
-    bool held = false;
-    for (const PlaneSupport& sp : r.support) {
-      bool all = !members.empty();
-      for (const SegmentId s : members) {
-        all = all && std::binary_search(sp.inliers.begin(), sp.inliers.end(), s);
-      }
-      held = held || all;
-    }
-    found += held ? 1 : 0;
-  }
-  return found;
-}
 
 int Robustness(int exhaustive_max, synth::NoiseModel model, int trials) {
   const std::vector<double> noises = {0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35};
@@ -90,7 +69,7 @@ int Robustness(int exhaustive_max, synth::NoiseModel model, int trials) {
             std::fprintf(stderr, "%s\n", r.error().ToString().c_str());
             return 1;
           }
-          total += FacesHeld(cube->scene, *r);
+          total += eval::CountTruePlanesHeld(cube->scene, r->memberships);
         }
         std::printf(" %.2f |", static_cast<double>(total) / trials);
       }
