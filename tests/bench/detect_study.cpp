@@ -4,6 +4,9 @@
 //       endpoint noise 0..0.35, 0..50 outliers in a ball of radius 2, eps 0.06, N_iter 100; mean
 //       number of faces found (a face counts if one plane holds its 4 edges), full method and
 //       both ablations.
+//   linesurf_detect_study edge-tests [samples=200000]
+//       Why the robustness goal is out of reach: the probability that one noisy cube edge passes
+//       the textural and the crease tests against the true geometry, per noise level.
 //   linesurf_detect_study andalusian PATH [threads=0]
 //       Detection on the Andalusian segments ignoring the given planes (eps 0.02, N_max 160) and
 //       how many of the reference planes are matched (angle < 5 deg, the reference plane's
@@ -17,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/rng.h"
 #include "engine/detect/collinear_groups.h"
 #include "engine/detect/detect_planes.h"
 #include "engine/io/reference_json.h"
@@ -75,6 +79,35 @@ int Robustness(int exhaustive_max, synth::NoiseModel model, int trials) {
       }
       std::printf("\n");
     }
+  }
+  return 0;
+}
+
+/// Probability that one edge with both endpoints displaced uniformly in the ball of radius
+/// `noise` passes the textural test (mean endpoint distance to the true face plane <= eps) and
+/// the crease test (mean endpoint distance to the true edge line <= eps), eps 0.06.
+int EdgeTests(int samples) {
+  constexpr double kEps = 0.06;
+  std::printf("| noise | P(textural test passes) | P(crease test passes) |\n|---|---|---|\n");
+  for (const double noise : {0.05, 0.10, 0.15, 0.20, 0.25, 0.30, 0.35}) {
+    Rng rng(MixSeed(1, RngStage::kSynth, static_cast<std::uint64_t>(noise * 100)));
+    auto displacement = [&] {
+      Vec3 v;
+      do {
+        v = Vec3(rng.Uniform(-noise, noise), rng.Uniform(-noise, noise), rng.Uniform(-noise, noise));
+      } while (v.norm() > noise);
+      return v;
+    };
+    int textural = 0;
+    int crease = 0;
+    for (int i = 0; i < samples; ++i) {  // edge along x; face plane z = 0; crease line = x axis
+      const Vec3 a = displacement();
+      const Vec3 b = displacement();
+      textural += 0.5 * (std::abs(a.z()) + std::abs(b.z())) <= kEps ? 1 : 0;
+      crease += 0.5 * (std::hypot(a.y(), a.z()) + std::hypot(b.y(), b.z())) <= kEps ? 1 : 0;
+    }
+    std::printf("| %.2f | %.3f | %.3f |\n", noise, static_cast<double>(textural) / samples,
+                static_cast<double>(crease) / samples);
   }
   return 0;
 }
@@ -215,11 +248,13 @@ int main(int argc, char** argv) {
     const int trials = argc > 4 ? std::atoi(argv[4]) : 20;
     return linesurf::Robustness(exhaustive, model, trials);
   }
+  if (mode == "edge-tests") return linesurf::EdgeTests(argc > 2 ? std::atoi(argv[2]) : 200000);
   if (mode == "andalusian" && argc > 2) {
     return linesurf::Andalusian(argv[2], argc > 3 ? std::atoi(argv[3]) : 0, argc, argv);
   }
   std::fprintf(stderr,
-               "usage: %s robustness [exhaustive_max] [ball|gauss] [trials] | andalusian PATH "
+               "usage: %s robustness [exhaustive_max] [ball|gauss] [trials] | edge-tests [samples] | "
+               "andalusian PATH "
                "[threads [min_iterations [confidence [near_fraction [max_planes [min_support]]]]]]\n",
                argv[0]);
   return 2;
