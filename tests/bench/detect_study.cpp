@@ -112,63 +112,16 @@ int EdgeTests(int samples) {
   return 0;
 }
 
-int Andalusian(const char* path, int threads, int argc, char** argv) {
-  Expected<Scene> read = io::ReadReferenceJson(path);
-  if (!read) {
-    std::fprintf(stderr, "%s\n", read.error().ToString().c_str());
-    return 1;
-  }
-  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(*read), {});
-  if (!sane) {
-    std::fprintf(stderr, "%s\n", sane.error().ToString().c_str());
-    return 1;
-  }
-  const Scene& scene = sane->scene;
-  PlaneDetectionOptions options;
-  options.epsilon = 0.02;
-  options.max_planes = 160;
-  // Optional overrides for parameter studies: min_iterations confidence near_fraction.
-  if (argc > 4) options.min_iterations = std::atoll(argv[4]);
-  if (argc > 5) options.confidence = std::atof(argv[5]);
-  if (argc > 6) options.near_fraction = std::atof(argv[6]);
-  if (argc > 7) options.max_planes = std::atoi(argv[7]);
-  if (argc > 8) options.min_support = std::atoi(argv[8]);
-  RunContext ctx;
-  ctx.num_threads = threads;
-  Expected<PlaneDetectionResult> r = DetectPlanes(scene, options, ctx);
-  if (!r) {
-    std::fprintf(stderr, "%s\n", r.error().ToString().c_str());
-    return 1;
-  }
-  const PlaneDetectionStats& st = r->stats;
-  std::printf("| segments | %zu |\n|---|---|\n", scene.segments.size());
-  std::printf("| planes before / after fusion | %d / %d (%d merges) |\n", st.planes_before_fusion,
-              st.planes_after_fusion, st.merges);
-  std::printf("| segments on 0 / 1 / 2 planes (L0/L1/L2) | %lld / %lld / %lld |\n",
-              static_cast<long long>(st.num_l0), static_cast<long long>(st.num_l1),
-              static_cast<long long>(st.num_l2));
-  std::printf("| candidates evaluated / failed draws | %lld / %lld |\n",
-              static_cast<long long>(st.candidates_evaluated),
-              static_cast<long long>(st.failed_draws));
-  std::printf("| runtime (s, %d threads) | %.2f (fusion %.3f) |\n", threads, st.seconds,
-              st.seconds_fusion);
-  std::printf("| distinct lines detected on | %lld |\n", static_cast<long long>(st.lines));
-  if (std::getenv("LINESURF_STUDY_VERBOSE") != nullptr) {
-    for (std::size_t p = 0; p < r->planes.size(); ++p) {
-      const Plane3& pl = r->planes[PlaneId(p)];
-      std::fprintf(stderr, "plane %zu: %u inliers, length %.1f, normal %.3f %.3f %.3f offset %.3f\n", p,
-                   r->support[PlaneId(p)].inlier_count, r->support[PlaneId(p)].inlier_length,
-                   pl.normal.x(), pl.normal.y(), pl.normal.z(), pl.Offset());
-    }
-  }
-  // Matching: reference plane q is matched by a detected plane p if their normals are within
-  // 5 degrees and every reference inlier of q (mean endpoint distance) is within 3 eps of p.
-  // Reported by the number of distinct lines (collinear parts merged) that support q, and for
-  // the reference planes themselves (how strict the criterion is).
+/// Matching: plane q of `scene` (with its memberships) is matched by a detected plane p if their
+/// normals are within 5 degrees and every inlier of q (mean endpoint distance) is within 3 eps
+/// of p. Printed by the number of distinct lines (collinear parts merged) that support q, with
+/// how many planes of `scene` pass the criterion against themselves (how strict it is).
+void PrintMatching(const Scene& scene, const IdVector<PlaneId, Plane3>& detected, double epsilon,
+                   const char* reference_name) {
   const double max_angle = 5.0 * std::numbers::pi / 180.0;
-  const double tol = 3.0 * options.epsilon;
+  const double tol = 3.0 * epsilon;
   const detect::CollinearGroups groups =
-      detect::GroupCollinearSegments(scene.segments.raw(), 1e-3 * options.epsilon);
+      detect::GroupCollinearSegments(scene.segments.raw(), 1e-3 * epsilon);
   std::vector<std::uint32_t> line_of(scene.segments.size());
   for (std::size_t g = 0; g < groups.members.NumRows(); ++g) {
     for (const SegmentId s : groups.members[SegmentId(g)]) line_of[s.index()] = g;
@@ -202,7 +155,7 @@ int Andalusian(const char* path, int threads, int argc, char** argv) {
     const Plane3& ref = scene.planes[PlaneId(q)];
     double best_fraction = 0.0;  // of the reference inliers within 3 eps of one plane
     double best_angle_deg = 90.0;
-    for (const Plane3& p : r->planes) {
+    for (const Plane3& p : detected) {
       const double angle = std::acos(std::min(1.0, std::abs(p.normal.dot(ref.normal))));
       if (angle >= max_angle) continue;
       const double fraction = fraction_near(p, members);
@@ -225,13 +178,84 @@ int Andalusian(const char* path, int threads, int argc, char** argv) {
                    q, members.size(), num_lines, best_fraction, best_angle_deg);
     }
   }
-  std::printf("\n| reference planes by supporting lines | planes | matched | 95 %% of inliers "
-              "within 3 eps | reference plane matches itself |\n|---|---|---|---|---|\n");
+  std::printf("\n| %s planes by supporting lines | planes | matched | 95 %% of inliers "
+              "within 3 eps | %s plane matches itself |\n|---|---|---|---|---|\n",
+              reference_name, reference_name);
   for (const Bucket& b : buckets) {
     std::printf("| %s | %zu | %zu (%.1f %%) | %zu | %zu |\n", b.name, b.planes, b.matched,
                 b.planes ? 100.0 * static_cast<double>(b.matched) / b.planes : 0.0, b.matched_95,
                 b.self);
   }
+}
+
+int Andalusian(const char* path, int threads, int argc, char** argv) {
+  Expected<Scene> read = io::ReadReferenceJson(path);
+  if (!read) {
+    std::fprintf(stderr, "%s\n", read.error().ToString().c_str());
+    return 1;
+  }
+  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(*read), {});
+  if (!sane) {
+    std::fprintf(stderr, "%s\n", sane.error().ToString().c_str());
+    return 1;
+  }
+  const Scene& scene = sane->scene;
+  PlaneDetectionOptions options;
+  options.epsilon = 0.02;
+  options.max_planes = 160;
+  // Optional overrides for parameter studies: min_iterations confidence near_fraction max_planes
+  // min_support max_failed_draws seed.
+  if (argc > 4) options.min_iterations = std::atoll(argv[4]);
+  if (argc > 5) options.confidence = std::atof(argv[5]);
+  if (argc > 6) options.near_fraction = std::atof(argv[6]);
+  if (argc > 7) options.max_planes = std::atoi(argv[7]);
+  if (argc > 8) options.min_support = std::atoi(argv[8]);
+  if (argc > 9) options.max_failed_draws = std::atoll(argv[9]);
+  if (argc > 10) options.seed = std::strtoull(argv[10], nullptr, 10);
+  RunContext ctx;
+  ctx.num_threads = threads;
+  Expected<PlaneDetectionResult> r = DetectPlanes(scene, options, ctx);
+  if (!r) {
+    std::fprintf(stderr, "%s\n", r.error().ToString().c_str());
+    return 1;
+  }
+  const PlaneDetectionStats& st = r->stats;
+  std::printf("| segments | %zu |\n|---|---|\n", scene.segments.size());
+  std::printf("| planes before / after fusion | %d / %d (%d merges) |\n", st.planes_before_fusion,
+              st.planes_after_fusion, st.merges);
+  std::printf("| segments on 0 / 1 / 2 planes (L0/L1/L2) | %lld / %lld / %lld |\n",
+              static_cast<long long>(st.num_l0), static_cast<long long>(st.num_l1),
+              static_cast<long long>(st.num_l2));
+  std::printf("| candidates evaluated / failed draws | %lld / %lld |\n",
+              static_cast<long long>(st.candidates_evaluated),
+              static_cast<long long>(st.failed_draws));
+  std::printf("| runtime (s, %d threads) | %.2f (fusion %.3f) |\n", threads, st.seconds,
+              st.seconds_fusion);
+  std::printf("| distinct lines detected on | %lld |\n", static_cast<long long>(st.lines));
+  if (std::getenv("LINESURF_STUDY_VERBOSE") != nullptr) {
+    for (std::size_t p = 0; p < r->planes.size(); ++p) {
+      const Plane3& pl = r->planes[PlaneId(p)];
+      std::fprintf(stderr, "plane %zu: %u inliers, length %.1f, normal %.3f %.3f %.3f offset %.3f\n", p,
+                   r->support[PlaneId(p)].inlier_count, r->support[PlaneId(p)].inlier_length,
+                   pl.normal.x(), pl.normal.y(), pl.normal.z(), pl.Offset());
+    }
+  }
+  PrintMatching(scene, r->planes, options.epsilon, "reference");
+  // Calibration: the same detector with the next seed, matched against this run's planes.
+  PlaneDetectionOptions next = options;
+  ++next.seed;
+  Expected<PlaneDetectionResult> other = DetectPlanes(scene, next, ctx);
+  if (!other) {
+    std::fprintf(stderr, "%s\n", other.error().ToString().c_str());
+    return 1;
+  }
+  Scene ours = scene;
+  ours.planes = r->planes;
+  ours.memberships = r->memberships;
+  std::printf("\nThe same detector with seed %llu matched against this run (seed %llu):\n",
+              static_cast<unsigned long long>(next.seed),
+              static_cast<unsigned long long>(options.seed));
+  PrintMatching(ours, other->planes, options.epsilon, "our");
   return 0;
 }
 
@@ -255,7 +279,8 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "usage: %s robustness [exhaustive_max] [ball|gauss] [trials] | edge-tests [samples] | "
                "andalusian PATH "
-               "[threads [min_iterations [confidence [near_fraction [max_planes [min_support]]]]]]\n",
+               "[threads [min_iterations [confidence [near_fraction [max_planes [min_support "
+               "[max_failed_draws [seed]]]]]]]]\n",
                argv[0]);
   return 2;
 }
