@@ -81,6 +81,7 @@ Status PlaneDetectionOptions::Validate() const {
   }
   if (!(block_size >= 0.0) || !std::isfinite(block_size)) return Invalid("block_size", ">= 0");
   if (!(block_halo >= 0.0 && block_halo < 0.5)) return Invalid("block_halo", "in [0, 0.5)");
+  if (block_max_segments < 0) return Invalid("block_max_segments", ">= 0");
   return {};
 }
 
@@ -437,8 +438,11 @@ CollinearGroups LinesToDetect(const Scene& scene, const PlaneDetectionOptions& o
 std::vector<DetectionBlock> SplitIntoBlocks(std::span<const Segment3> lines,
                                             const PlaneDetectionOptions& options) {
   if (options.block_size > 0.0) {
-    return AssignDetectionBlocks(lines, options.block_size,
-                                 options.block_halo * options.block_size);
+    BlockLayout layout;
+    layout.block_size = options.block_size;
+    layout.halo = options.block_halo;
+    layout.max_home_segments = static_cast<std::size_t>(options.block_max_segments);
+    return AssignDetectionBlocks(lines, layout);
   }
   DetectionBlock all;
   all.segments.reserve(lines.size());

@@ -90,8 +90,12 @@ struct PlaneDetectionOptions {
   /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
   /// gives exactly the monolithic result.
   double block_size = 0.0;
-  /// Halo of a block, as a fraction of block_size ([0, 0.5)).
+  /// Halo of a block, as a fraction of its side ([0, 0.5)).
   double block_halo = 0.1;
+  /// A block whose midpoints number more than this is split into 8 halves, recursively, so that
+  /// crowded places do not make one block's RANSAC the bottleneck (>= 0; 0 = never split). The
+  /// count is of distinct lines (collinear parts merged).
+  std::int64_t block_max_segments = 10000;
   /// Seed of all random streams; same input + options + seed => same output, any thread count.
   std::uint64_t seed = 0;
 

@@ -211,11 +211,14 @@ PlaneDetectionOptions GridOptions() {
 
 TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
   const Scene scene = CubeGrid();
-  for (const double block_size : {0.0, 2.0}) {  // whole scene, then blocks cutting the cubes
+  // Whole scene; blocks cutting the cubes; one grid block split (octree) down to <= 40 lines.
+  for (const auto& [block_size, max_segments] : {std::pair{0.0, 0}, {2.0, 0}, {20.0, 40}}) {
     PlaneDetectionOptions o = GridOptions();
     o.block_size = block_size;
+    o.block_max_segments = max_segments;
     const PlaneDetectionResult r1 = Detect(scene, o, 1);
     ASSERT_GT(r1.planes.size(), 10u);
+    EXPECT_TRUE(max_segments == 0 || r1.stats.blocks > 1);
     for (int threads : {2, 8}) ExpectSameResult(Detect(scene, o, threads), r1);
   }
 }

@@ -1,66 +1,108 @@
 #include "engine/detect/detection_blocks.h"
 
-#include "engine/core/exception.h"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <tuple>
 
+#include "engine/core/exception.h"
+
 namespace linesurf::detect {
 namespace {
 constexpr char kStage[] = "detect_planes";
 /// Guards the integer block coordinates against absurdly small block sizes.
 constexpr double kMaxBlocksPerAxis = 1 << 20;
-}  // namespace
+/// Splits stop here even if a block stays crowded (its segments' midpoints nearly coincide).
+constexpr int kMaxDepth = 12;
 
-std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segments,
-                                                  double block_size,
-                                                  double halo) {
-  Box3 box;
-  for (const Segment3& s : segments) box.Extend(s.Midpoint());
-  if (box.IsEmpty()) return {};
-  const Vec3 extent = box.Extent();
-  LINESURF_THROW_IF(extent.maxCoeff() / block_size > kMaxBlocksPerAxis,
-                    kInvalidOptions,
-                    kStage,
-                    "PlaneDetectionOptions.block_size "
-                        << block_size << " is too small for a scene of extent " << extent.maxCoeff()
-                        << " (more than 2^20 blocks along one axis)");
-  using Key = std::tuple<std::int64_t, std::int64_t, std::int64_t>;  // (z, y, x): the listing order
-  struct Members {
-    std::vector<SegmentId> ids;
-    bool home = false;  ///< some segment's midpoint lies in the block itself
-  };
-  std::map<Key, Members> blocks;
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    const Vec3 rel = (segments[i].Midpoint() - box.min) / block_size;
-    const double h = halo / block_size;
-    std::array<std::int64_t, 3> home{};
-    std::array<std::int64_t, 3> lo{};
-    std::array<std::int64_t, 3> hi{};
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = static_cast<std::int64_t>(std::floor(rel[a] - h));
-      hi[a] = static_cast<std::int64_t>(std::floor(rel[a] + h));
-      home[a] = static_cast<std::int64_t>(std::floor(rel[a]));
+using Key = std::array<std::int64_t, 3>;  // (z, y, x): the listing order
+
+struct Members {
+  std::vector<SegmentId> ids;       ///< home and halo segments, ascending
+  std::vector<SegmentId> home_ids;  ///< segments whose midpoint lies in the cube itself
+};
+
+/// Cubes of side `size` anchored at `origin`, with a halo of `halo` (scene units), holding `ids`.
+/// For the children of a split block (`parent_home` set), only the cubes 0..1 along each axis
+/// exist, and every home segment of the parent is the home of one child.
+std::map<Key, Members> Distribute(std::span<const Segment3> segments,
+                                  std::span<const SegmentId> ids, const Vec3& origin, double size,
+                                  double halo, const std::vector<SegmentId>* parent_home) {
+  std::map<Key, Members> cubes;
+  const double h = halo / size;
+  for (const SegmentId id : ids) {
+    const Vec3 rel = (segments[id.index()].Midpoint() - origin) / size;
+    Key home{};
+    Key lo{};
+    Key hi{};
+    for (int a = 0; a < 3; ++a) {  // key order is (z, y, x)
+      home[2 - a] = static_cast<std::int64_t>(std::floor(rel[a]));
+      lo[2 - a] = static_cast<std::int64_t>(std::floor(rel[a] - h));
+      hi[2 - a] = static_cast<std::int64_t>(std::floor(rel[a] + h));
     }
-    blocks[{home[2], home[1], home[0]}].home = true;
-    for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+    bool is_home = true;
+    if (parent_home != nullptr) {
+      is_home = std::binary_search(parent_home->begin(), parent_home->end(), id);
+      for (int a = 0; a < 3; ++a) {
+        // Rounding may put a parent's home segment a hair outside: keep it in a child.
+        if (is_home) home[a] = std::clamp<std::int64_t>(home[a], 0, 1);
+        lo[a] = std::max<std::int64_t>(std::min(lo[a], home[a]), 0);
+        hi[a] = std::min<std::int64_t>(std::max(hi[a], home[a]), 1);
+      }
+    }
+    if (is_home) cubes[home].home_ids.push_back(id);
+    for (std::int64_t z = lo[0]; z <= hi[0]; ++z) {
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
-        for (std::int64_t x = lo[0]; x <= hi[0]; ++x) blocks[{z, y, x}].ids.emplace_back(i);
+        for (std::int64_t x = lo[2]; x <= hi[2]; ++x) cubes[{z, y, x}].ids.push_back(id);
       }
     }
   }
-  std::vector<DetectionBlock> out;
-  out.reserve(blocks.size());
-  for (auto& [key, members] : blocks) {
-    if (!members.home) continue;  // halo only: its segments' home blocks detect them
+  return cubes;
+}
+
+/// Appends the blocks of `cubes` in key order, splitting the crowded ones.
+void Emit(std::span<const Segment3> segments, std::map<Key, Members>& cubes, const Vec3& origin,
+          double size, const BlockLayout& layout, int depth, std::vector<DetectionBlock>& out) {
+  for (auto& [key, members] : cubes) {
+    if (members.home_ids.empty()) continue;  // halo only: its segments' home blocks detect them
     DetectionBlock block;
-    std::tie(block.z, block.y, block.x) = key;
-    block.segments = std::move(members.ids);  // ascending: segments were visited in order
-    out.push_back(std::move(block));
+    block.box.min = origin + size * Vec3(static_cast<double>(key[2]), static_cast<double>(key[1]),
+                                         static_cast<double>(key[0]));
+    block.box.max = block.box.min + Vec3::Constant(size);
+    block.depth = depth;
+    const bool crowded = layout.max_home_segments > 0 &&
+                         members.home_ids.size() > layout.max_home_segments && depth < kMaxDepth;
+    if (!crowded) {
+      block.segments = std::move(members.ids);
+      out.push_back(std::move(block));
+      continue;
+    }
+    const double child = 0.5 * size;
+    std::map<Key, Members> children = Distribute(segments, members.ids, block.box.min, child,
+                                                 layout.halo * child, &members.home_ids);
+    Emit(segments, children, block.box.min, child, layout, depth + 1, out);
   }
+}
+
+}  // namespace
+
+std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segments,
+                                                  const BlockLayout& layout) {
+  Box3 box;
+  for (const Segment3& s : segments) box.Extend(s.Midpoint());
+  if (box.IsEmpty()) return {};
+  const double extent = box.Extent().maxCoeff();
+  LINESURF_THROW_IF(extent / layout.block_size > kMaxBlocksPerAxis, kInvalidOptions, kStage,
+                    "PlaneDetectionOptions.block_size "
+                        << layout.block_size << " is too small for a scene of extent " << extent
+                        << " (more than 2^20 blocks along one axis)");
+  std::vector<SegmentId> all(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) all[i] = SegmentId(i);
+  std::map<Key, Members> grid = Distribute(segments, all, box.min, layout.block_size,
+                                           layout.halo * layout.block_size, nullptr);
+  std::vector<DetectionBlock> out;
+  Emit(segments, grid, box.min, layout.block_size, layout, 0, out);
   return out;
 }
 

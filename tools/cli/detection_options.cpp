@@ -28,6 +28,10 @@ void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
   sub.add_option("--block-halo", options.block_halo, "Halo of a block, fraction of its side")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.49));
+  sub.add_option("--block-max-segments", options.block_max_segments,
+                 "Split a block with more lines than this into 8, recursively (0 = never)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace linesurf::cli

@@ -10,8 +10,8 @@
 namespace linesurf::cli {
 
 /// Adds --epsilon, --relative-epsilon, --iterations, --max-planes, --min-support,
-/// --collinear-tolerance, --block-size and --block-halo, writing into `options` and
-/// `relative_epsilon` (copy the latter into options.relative_epsilon after parsing).
+/// --collinear-tolerance, --block-size, --block-halo and --block-max-segments, writing into
+/// `options` and `relative_epsilon` (copy the latter into options.relative_epsilon after parsing).
 void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
                          std::optional<double>& relative_epsilon);
 
