@@ -1,12 +1,12 @@
 #include "engine/detect/detection_blocks.h"
 
+#include "engine/core/exception.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <tuple>
-
-#include "engine/core/exception.h"
 
 namespace linesurf::detect {
 namespace {
@@ -27,8 +27,11 @@ struct Members {
 /// For the children of a split block (`parent_home` set), only the cubes 0..1 along each axis
 /// exist, and every home segment of the parent is the home of one child.
 std::map<Key, Members> Distribute(std::span<const Segment3> segments,
-                                  std::span<const SegmentId> ids, const Vec3& origin, double size,
-                                  double halo, const std::vector<SegmentId>* parent_home) {
+                                  std::span<const SegmentId> ids,
+                                  const Vec3& origin,
+                                  double size,
+                                  double halo,
+                                  const std::vector<SegmentId>* parent_home) {
   std::map<Key, Members> cubes;
   const double h = halo / size;
   for (const SegmentId id : ids) {
@@ -62,12 +65,18 @@ std::map<Key, Members> Distribute(std::span<const Segment3> segments,
 }
 
 /// Appends the blocks of `cubes` in key order, splitting the crowded ones.
-void Emit(std::span<const Segment3> segments, std::map<Key, Members>& cubes, const Vec3& origin,
-          double size, const BlockLayout& layout, int depth, std::vector<DetectionBlock>& out) {
+void Emit(std::span<const Segment3> segments,
+          std::map<Key, Members>& cubes,
+          const Vec3& origin,
+          double size,
+          const BlockLayout& layout,
+          int depth,
+          std::vector<DetectionBlock>& out) {
   for (auto& [key, members] : cubes) {
     if (members.home_ids.empty()) continue;  // halo only: its segments' home blocks detect them
     DetectionBlock block;
-    block.box.min = origin + size * Vec3(static_cast<double>(key[2]), static_cast<double>(key[1]),
+    block.box.min = origin + size * Vec3(static_cast<double>(key[2]),
+                                         static_cast<double>(key[1]),
                                          static_cast<double>(key[0]));
     block.box.max = block.box.min + Vec3::Constant(size);
     block.depth = depth;
@@ -79,8 +88,8 @@ void Emit(std::span<const Segment3> segments, std::map<Key, Members>& cubes, con
       continue;
     }
     const double child = 0.5 * size;
-    std::map<Key, Members> children = Distribute(segments, members.ids, block.box.min, child,
-                                                 layout.halo * child, &members.home_ids);
+    std::map<Key, Members> children = Distribute(
+        segments, members.ids, block.box.min, child, layout.halo * child, &members.home_ids);
     Emit(segments, children, block.box.min, child, layout, depth + 1, out);
   }
 }
@@ -93,14 +102,16 @@ std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segm
   for (const Segment3& s : segments) box.Extend(s.Midpoint());
   if (box.IsEmpty()) return {};
   const double extent = box.Extent().maxCoeff();
-  LINESURF_THROW_IF(extent / layout.block_size > kMaxBlocksPerAxis, kInvalidOptions, kStage,
+  LINESURF_THROW_IF(extent / layout.block_size > kMaxBlocksPerAxis,
+                    kInvalidOptions,
+                    kStage,
                     "PlaneDetectionOptions.block_size "
                         << layout.block_size << " is too small for a scene of extent " << extent
                         << " (more than 2^20 blocks along one axis)");
   std::vector<SegmentId> all(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) all[i] = SegmentId(i);
-  std::map<Key, Members> grid = Distribute(segments, all, box.min, layout.block_size,
-                                           layout.halo * layout.block_size, nullptr);
+  std::map<Key, Members> grid = Distribute(
+      segments, all, box.min, layout.block_size, layout.halo * layout.block_size, nullptr);
   std::vector<DetectionBlock> out;
   Emit(segments, grid, box.min, layout.block_size, layout, 0, out);
   return out;

@@ -4,12 +4,12 @@
 // given to the blocks whose box, dilated by the halo, holds its midpoint. A block with too many
 // home segments is split into 8 children, recursively (an octree over the crowded places).
 
+#include "engine/core/geometry.h"
+#include "engine/core/strong_id.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
-
-#include "engine/core/geometry.h"
-#include "engine/core/strong_id.h"
 
 namespace linesurf::detect {
 

@@ -1,10 +1,10 @@
 #include "engine/detect/detection_blocks.h"
 
+#include "engine/core/rng.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
-#include "engine/core/rng.h"
 
 namespace linesurf::detect {
 namespace {
@@ -22,7 +22,8 @@ std::vector<Segment3> ClusteredSegments() {
 }
 
 bool Inside(const Vec3& p, const Box3& box, double margin) {
-  return (p.array() >= box.min.array() - margin).all() && (p.array() <= box.max.array() + margin).all();
+  return (p.array() >= box.min.array() - margin).all() &&
+         (p.array() <= box.max.array() + margin).all();
 }
 
 TEST(AssignDetectionBlocks, CrowdedBlocksAreSplitAndEveryBlockSeesItsHalo) {
@@ -48,8 +49,8 @@ TEST(AssignDetectionBlocks, CrowdedBlocksAreSplitAndEveryBlockSeesItsHalo) {
       // Everything within the halo is listed; nothing beyond it is (1e-9 for rounding).
       EXPECT_TRUE(!Inside(m, block.box, halo - 1e-9) || listed) << i;
       EXPECT_TRUE(!listed || Inside(m, block.box, halo + 1e-9)) << i;
-      const bool home = (m.array() >= block.box.min.array()).all() &&
-                        (m.array() < block.box.max.array()).all();
+      const bool home =
+          (m.array() >= block.box.min.array()).all() && (m.array() < block.box.max.array()).all();
       homes[i] += home ? 1 : 0;
       home_count += home ? 1 : 0;
     }
