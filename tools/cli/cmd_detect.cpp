@@ -73,6 +73,9 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
   return {};
 }
 
+/// Above this many segments, a whole-scene detection gets a hint about per-block detection.
+constexpr std::size_t kLargeSceneSegments = 50000;
+
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
   Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
   if (!read) return ReportError(read.error());
@@ -87,6 +90,11 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   scene = std::move(sane->scene);
 
   args.options.relative_epsilon = args.relative_epsilon;
+  if (args.options.block_size <= 0.0 && scene.segments.size() > kLargeSceneSegments) {
+    PrintWarning(common, std::to_string(scene.segments.size()) +
+                             " segments detected as one block: this grows faster than linearly; "
+                             "--block-size (e.g. the size of one building) keeps it linear");
+  }
   RunContext ctx;
   ConfigureRunContext(common, ctx);
   Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.options, ctx);
