@@ -37,6 +37,10 @@ constexpr std::size_t kCandidateGrain = 4;
 constexpr double kMinSampleLengthOverEps = 1e-6;
 /// A fit whose two largest spreads differ by more than this ratio is collinear: keep the hint.
 constexpr double kCollinearEigenRatio = 1e-12;
+/// Safety factors of the cheap pair rejections in PlaneFromPair (squared quantities): far from
+/// 1 compared with rounding, close enough to 1 to reject nearly every invalid pair.
+constexpr double kCheapRejectShrink = 1.0 - 1e-9;
+constexpr double kCheapRejectGrow = 1.0 + 1e-9;
 /// Tags the random streams of per-block detection (block b draws from (seed, kBlockStream, b)).
 constexpr std::uint64_t kBlockStream = 0xb10c0000b10c0000ULL;
 
@@ -148,6 +152,8 @@ class Detector {
         memberships_(segments_.size()),
         bvh_(segments_) {
     direction_.resize(segments_.size(), Vec3::Zero());
+    midpoint_.reserve(segments_.size());
+    for (const Segment3& seg : segments_) midpoint_.push_back(seg.Midpoint());
     sampleable_.resize(segments_.size(), false);
     for (std::size_t i = 0; i < segments_.size(); ++i) {
       const Vec3 d = segments_[i].p2 - segments_[i].p1;
@@ -264,12 +270,18 @@ class Detector {
       if (mb.Contains(ma.planes[i])) return std::nullopt;
     }
     const Vec3 cross = direction_[a.index()].cross(direction_[b.index()]);
-    const double sin = cross.norm();
+    // Cheap rejections first, with margins so that they never decide a borderline pair: the
+    // exact tests below keep the result bit-identical to doing them alone.
+    const double sin2 = cross.squaredNorm();
+    if (sin2 < kCheapRejectShrink * sin_pair_ * sin_pair_) return std::nullopt;
+    const Vec3& mid_a = midpoint_[a.index()];
+    const Vec3& mid_b = midpoint_[b.index()];
+    const double gap = cross.dot(mid_a - mid_b);
+    if (gap * gap > kCheapRejectGrow * 4.0 * epsilon_ * epsilon_ * sin2) return std::nullopt;
+    const double sin = std::sqrt(sin2);
     if (sin < sin_pair_) return std::nullopt;
     Plane3 plane;
     plane.normal = cross / sin;
-    const Vec3 mid_a = segments_[a.index()].Midpoint();
-    const Vec3 mid_b = segments_[b.index()].Midpoint();
     if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * epsilon_) return std::nullopt;
     plane.point = 0.5 * (mid_a + mid_b);
     return plane;
@@ -398,6 +410,7 @@ class Detector {
   double sin_crease_;
   std::vector<PlaneMembership> memberships_;
   std::vector<Vec3> direction_;
+  std::vector<Vec3> midpoint_;
   std::vector<bool> sampleable_;
   detect::SegmentBvh bvh_;
   std::vector<detect::SupportedPlane> planes_;
