@@ -510,23 +510,6 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
   return planes;
 }
 
-/// Keeps the `max_planes` planes of largest support (ties: lower index), in their order.
-void KeepLargestPlanes(std::size_t max_planes, std::vector<SupportedPlane>& planes) {
-  if (planes.size() <= max_planes) return;
-  std::vector<std::size_t> order(planes.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return planes[a].inliers.size() > planes[b].inliers.size();
-  });
-  std::vector<bool> keep(planes.size(), false);
-  for (std::size_t i = 0; i < max_planes; ++i) keep[order[i]] = true;
-  std::vector<SupportedPlane> kept;
-  for (std::size_t i = 0; i < planes.size(); ++i) {
-    if (keep[i]) kept.push_back(std::move(planes[i]));
-  }
-  planes = std::move(kept);
-}
-
 double SceneDiagonal(const Scene& scene) {
   Box3 box;
   for (const Segment3& s : scene.segments) {
@@ -581,7 +564,6 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     if (several_blocks) {
       result.stats.memberships_dropped =
           detect::LimitMemberships(lines.size(), options.min_support, planes);
-      detect::KeepLargestPlanes(static_cast<std::size_t>(options.max_planes), planes);
     }
     detect::ExpandToSegments(groups, planes);
     result.stats.seconds_fusion =

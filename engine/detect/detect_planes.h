@@ -86,7 +86,7 @@ struct PlaneDetectionOptions {
   /// (scene units); RANSAC runs per cube on the segments whose midpoint lies in the cube dilated
   /// by the halo, cubes in parallel, then a global fusion merges the pieces of one plane found
   /// in neighbouring cubes and re-applies the at-most-2 rule. Work grows about linearly with the
-  /// scene; `max_planes` then bounds each cube and the final count (largest supports kept).
+  /// scene; `max_planes` then bounds each block's RANSAC, not the total (a city has thousands).
   /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
   /// gives exactly the monolithic result.
   double block_size = 0.0;

@@ -12,7 +12,8 @@ void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
   sub.add_option("--iterations", options.iterations, "Max candidate pairs per plane")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub.add_option("--max-planes", options.max_planes, "Max number of planes")
+  sub.add_option("--max-planes", options.max_planes,
+                 "Max number of planes (per block with --block-size)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   sub.add_option("--min-support", options.min_support, "Min inlier segments per plane")
