@@ -311,6 +311,15 @@ TEST(DetectPlanes, RejectsInvalidOptionsAndEmptyInputGivesNoPlanes) {
   EXPECT_TRUE(empty->planes.empty());
 }
 
+TEST(DetectPlanes, WithBlocksMaxPlanesBoundsEachBlockNotTheTotal) {
+  PlaneDetectionOptions o = GridOptions();
+  o.block_size = 2.5;
+  o.block_halo = 0.3;
+  o.max_planes = 6;
+  const PlaneDetectionResult r = Detect(CubeGrid(), o);
+  EXPECT_GT(r.planes.size(), 6u * 2);  // several blocks, up to 6 planes each
+}
+
 TEST(DetectPlanes, AbsurdlySmallBlocksAreRefusedWithAClearError) {
   PlaneDetectionOptions o = GridOptions();
   o.block_size = 1e-9;
