@@ -72,6 +72,41 @@ TEST_F(CliIo, ConvertLine3dppWithNvmKeepsEveryValue) {
   EXPECT_EQ(json, Slurp(dir_ / "p.json"));
 }
 
+std::size_t Count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST_F(CliIo, DetectWritesPlanesVertexGroupsAndAReport) {
+  const CliRun synth =
+      RunLinesurf("-q synth cube --seed 1 -o " + Quote((dir_ / "cube").string()), dir_);
+  ASSERT_EQ(synth.exit_code, 0) << synth.err;
+  const CliRun r = RunLinesurf(
+      "detect " + Quote((dir_ / "cube" / "lines.json").string()) + " --epsilon 0.06 -o " +
+          Quote((dir_ / "planes.json").string()) + " --vg " + Quote((dir_ / "planes.vg").string()) +
+          " --report " + Quote((dir_ / "report.json").string()),
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("6 planes"), std::string::npos) << r.err;
+  // The clean cube: 6 faces, each holding its 4 edges of length 2.
+  const std::string report = Slurp(dir_ / "report.json");
+  EXPECT_EQ(Count(report, "\"inlier_count\": 4,"), 6u) << report;
+  EXPECT_EQ(Count(report, "\"inlier_length\": 8.0"), 6u) << report;
+  EXPECT_NE(report.find("\"segments_with_2_planes\": 12"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"epsilon\": 0.06"), std::string::npos) << report;
+  EXPECT_EQ(Count(Slurp(dir_ / "planes.json"), "\"normal\""), 6u);
+  EXPECT_NE(Slurp(dir_ / "planes.vg").find("num_groups: 6"), std::string::npos);
+  // An unwritable report is an error naming the file.
+  const CliRun bad = RunLinesurf(
+      "detect " + Quote((dir_ / "cube" / "lines.json").string()) + " -o " +
+          Quote((dir_ / "p2.json").string()) + " --report " +
+          Quote((dir_ / "missing" / "report.json").string()),
+      dir_);
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("missing/report.json"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliIo, UsageErrorsExitWithTwo) {
   WriteText(dir_ / "l.txt", "1 0 0 0 1 0 0 0\n");
   CliRun r = RunLinesurf("info " + Quote((dir_ / "l.txt").string()), dir_);

@@ -21,6 +21,7 @@ struct DetectArgs {
   std::string input;
   std::string output;
   std::string vg;
+  std::string report;
   std::optional<double> relative_epsilon;
   PlaneDetectionOptions options;
 };
@@ -76,6 +77,40 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
 /// Above this many segments, a whole-scene detection gets a hint about per-block detection.
 constexpr std::size_t kLargeSceneSegments = 50000;
 
+/// The run report: options, statistics and every plane's inlier count and total length (plane
+/// i is plane i of the output JSON).
+nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& args,
+                                const PlaneDetectionResult& r, std::size_t segments) {
+  const PlaneDetectionStats& st = r.stats;
+  nlohmann::json j;
+  j["input"] = args.input;
+  j["output"] = args.output;
+  j["options"] = DetectionOptionsJson(args.options);
+  j["options"]["threads"] = common.threads;
+  j["stats"] = {{"segments", segments},
+                {"lines", st.lines},
+                {"epsilon", st.epsilon},
+                {"blocks", st.blocks},
+                {"planes_before_fusion", st.planes_before_fusion},
+                {"planes", st.planes_after_fusion},
+                {"merges", st.merges},
+                {"memberships_dropped", st.memberships_dropped},
+                {"segments_with_0_planes", st.num_l0},
+                {"segments_with_1_plane", st.num_l1},
+                {"segments_with_2_planes", st.num_l2},
+                {"candidates_evaluated", st.candidates_evaluated},
+                {"failed_draws", st.failed_draws},
+                {"seconds", st.seconds},
+                {"seconds_fusion", st.seconds_fusion}};
+  nlohmann::json planes = nlohmann::json::array();
+  for (const PlaneSupport& support : r.support) {
+    planes.push_back(
+        {{"inlier_count", support.inlier_count}, {"inlier_length", support.inlier_length}});
+  }
+  j["planes"] = std::move(planes);
+  return j;
+}
+
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
   Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
   if (!read) return ReportError(read.error());
@@ -100,6 +135,15 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.options, ctx);
   if (!detected) return ReportError(detected.error());
   const PlaneDetectionStats& st = detected->stats;
+  if (!args.report.empty()) {
+    std::ofstream out(args.report);
+    out << DetectReportJson(common, args, *detected, scene.segments.size()).dump(2) << "\n";
+    out.close();
+    if (!out) {
+      return ReportError(
+          Error{ErrorCode::kInvalidInput, "detect", "cannot write report " + args.report});
+    }
+  }
   scene.planes = std::move(detected->planes);
   scene.memberships = std::move(detected->memberships);
 
@@ -146,6 +190,9 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   AddDetectionOptions(*sub, args->options, args->relative_epsilon);
   sub->add_option("--seed", args->options.seed, "Random seed")->capture_default_str();
   sub->add_option("--vg", args->vg, "Also write the planes as PolyFit/abspy vertex groups");
+  sub->add_option("--report", args->report,
+                  "Write the run report (JSON: options, statistics, inlier count and length of "
+                  "every plane) here");
   cmd.run = [&common, args] { return RunDetect(common, *args); };
   return cmd;
 }

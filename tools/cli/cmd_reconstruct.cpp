@@ -50,6 +50,9 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
                   {"w_prior", e.viewpoint_prior_weight},
                   {"samples_per_sigma", e.samples_per_sigma},
                   {"structural_as_textural", e.structural_as_textural}};
+  if (args.planes == "detect") {
+    j["options"]["detection"] = DetectionOptionsJson(args.options.planes);
+  }
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [name, seconds] : s.stage_seconds) stages[name] = seconds;
   j["stage_seconds"] = stages;

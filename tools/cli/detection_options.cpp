@@ -35,4 +35,19 @@ void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
       ->check(CLI::NonNegativeNumber);
 }
 
+nlohmann::json DetectionOptionsJson(const PlaneDetectionOptions& options) {
+  nlohmann::json j = {{"epsilon", options.epsilon},
+                      {"iterations", options.iterations},
+                      {"max_planes", options.max_planes},
+                      {"min_support", options.min_support},
+                      {"collinear_tolerance", options.collinear_tolerance},
+                      {"block_size", options.block_size},
+                      {"block_halo", options.block_halo},
+                      {"block_max_segments", options.block_max_segments},
+                      {"seed", options.seed}};
+  j["relative_epsilon"] =
+      options.relative_epsilon ? nlohmann::json(*options.relative_epsilon) : nlohmann::json();
+  return j;
+}
+
 }  // namespace linesurf::cli

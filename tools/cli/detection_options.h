@@ -4,6 +4,7 @@
 #include <optional>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "engine/detect/detect_planes.h"
 
@@ -14,5 +15,8 @@ namespace linesurf::cli {
 /// `options` and `relative_epsilon` (copy the latter into options.relative_epsilon after parsing).
 void AddDetectionOptions(CLI::App& sub, PlaneDetectionOptions& options,
                          std::optional<double>& relative_epsilon);
+
+/// The detection options as written in run reports (`detect --report`, `reconstruct --report`).
+nlohmann::json DetectionOptionsJson(const PlaneDetectionOptions& options);
 
 }  // namespace linesurf::cli
