@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-
 #include <Eigen/Geometry>
 
 #include "engine/detect/detect_planes.h"
+#include "tools/eval/evaluate_planes.h"
+#include "tools/gen/synthesize.h"
 
 namespace linesurf::detect {
 namespace {
@@ -48,25 +48,17 @@ TEST(GroupCollinearSegments, PartsOfOneLineFormOneGroupSpanningThem) {
 }
 
 TEST(GroupCollinearSegments, CubeEdgesCutIntoPartsAreDetectedAsWholeEdges) {
-  // The 12 edges of the cube [-1, 1]^3, each cut into 3 parts (like per-camera sub-segments).
-  Scene scene;
-  scene.viewpoints.push_back(Vec3(5, 4, 3));
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int a = -1; a <= 1; a += 2) {
-      for (int b = -1; b <= 1; b += 2) {
-        Vec3 p;
-        Vec3 q;
-        p[axis] = -1;
-        q[axis] = 1;
-        p[(axis + 1) % 3] = q[(axis + 1) % 3] = a;
-        p[(axis + 2) % 3] = q[(axis + 2) % 3] = b;
-        for (int part = 0; part < 3; ++part) {
-          scene.segments.push_back({p + (q - p) * (part / 3.0), p + (q - p) * ((part + 0.9) / 3.0)});
-          scene.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(0u)});
-        }
-      }
-    }
-  }
+  // The 12 edges of the noise-free synthetic cube, each cut into 1..4 collinear parts (like
+  // per-camera sub-segments).
+  synth::SynthSpec spec;
+  spec.family = "cube";
+  spec.seed = 5;
+  spec.max_pieces = 4;
+  const Expected<synth::SyntheticScene> cube = synth::Synthesize(spec);
+  ASSERT_TRUE(cube.has_value());
+  const Scene& scene = cube->scene;
+  const std::size_t n = scene.segments.size();
+  ASSERT_GT(n, 24u);  // most edges are cut
   PlaneDetectionOptions options;
   options.epsilon = 0.06;
   RunContext ctx;
@@ -74,12 +66,21 @@ TEST(GroupCollinearSegments, CubeEdgesCutIntoPartsAreDetectedAsWholeEdges) {
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->stats.lines, 12);
   EXPECT_EQ(r->planes.size(), 6u);
-  EXPECT_EQ(r->stats.num_l2, 36);
-  for (std::size_t s = 0; s < 36; s += 3) {  // the parts of one edge share its two planes
-    EXPECT_EQ(r->memberships[SegmentId(s)].planes, r->memberships[SegmentId(s + 1)].planes);
-    EXPECT_EQ(r->memberships[SegmentId(s)].planes, r->memberships[SegmentId(s + 2)].planes);
+  EXPECT_EQ(r->stats.num_l2, static_cast<std::int64_t>(n));
+  // Each face holds all the parts of its 4 edges, and nothing else.
+  EXPECT_EQ(eval::CountTruePlanesHeld(scene, r->memberships), 6);
+  std::size_t memberships = 0;
+  for (const PlaneSupport& support : r->support) memberships += support.inlier_count;
+  EXPECT_EQ(memberships, 2 * n);
+  // The parts of one edge (same true planes) share its two detected planes.
+  const auto& truth = scene.memberships;
+  const auto& found = r->memberships;
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (truth[SegmentId(a)].planes != truth[SegmentId(b)].planes) continue;
+      EXPECT_EQ(found[SegmentId(a)].planes, found[SegmentId(b)].planes) << a << " " << b;
+    }
   }
-  for (const PlaneSupport& support : r->support) EXPECT_EQ(support.inlier_count, 12u);
 }
 
 }  // namespace
