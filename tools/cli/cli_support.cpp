@@ -3,6 +3,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include "engine/core/exception.h"
@@ -63,6 +64,15 @@ int GuardedRun(const std::function<int()>& fn) {
   } catch (const std::exception& e) {
     return ReportError(Error{ErrorCode::kInternal, "", e.what()});
   }
+}
+
+Status WriteReport(const std::string& path, const nlohmann::json& report,
+                   const std::string& stage) {
+  std::ofstream out(path);
+  out << report.dump(2) << "\n";
+  out.close();
+  if (!out) return Error{ErrorCode::kInvalidInput, stage, "cannot write report " + path};
+  return {};
 }
 
 }  // namespace linesurf::cli

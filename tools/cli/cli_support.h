@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "linesurf/error.h"
 #include "engine/core/run_context.h"
@@ -43,6 +44,10 @@ int ReportError(const Error& error);
 void ConfigureRunContext(const CommonOptions& common, RunContext& ctx);
 /// Prints a warning line to stderr unless quiet.
 void PrintWarning(const CommonOptions& common, const std::string& message);
+/// Writes a run report (`--report`) as indented JSON; a file that cannot be written is an
+/// invalid-input error of `stage` naming it.
+Status WriteReport(const std::string& path, const nlohmann::json& report,
+                   const std::string& stage);
 /// Runs `fn`, turning any escaping exception into an error message and exit code.
 int GuardedRun(const std::function<int()>& fn);
 

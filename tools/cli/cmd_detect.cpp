@@ -136,13 +136,8 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   if (!detected) return ReportError(detected.error());
   const PlaneDetectionStats& st = detected->stats;
   if (!args.report.empty()) {
-    std::ofstream out(args.report);
-    out << DetectReportJson(common, args, *detected, scene.segments.size()).dump(2) << "\n";
-    out.close();
-    if (!out) {
-      return ReportError(
-          Error{ErrorCode::kInvalidInput, "detect", "cannot write report " + args.report});
-    }
+    const nlohmann::json report = DetectReportJson(common, args, *detected, scene.segments.size());
+    if (Status s = WriteReport(args.report, report, "detect"); !s) return ReportError(s.error());
   }
   scene.planes = std::move(detected->planes);
   scene.memberships = std::move(detected->memberships);

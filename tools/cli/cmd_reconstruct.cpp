@@ -1,7 +1,6 @@
 // `linesurf reconstruct INPUT -o MESH.{ply,obj,off}`: the whole method (docs/reconstruction.md).
 
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <string>
@@ -121,12 +120,8 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   if (Status s = io::WriteMesh(result->mesh, args.output, write); !s) return ReportError(s.error());
   if (!args.report.empty()) {
-    std::ofstream out(args.report);
-    out << ReportJson(args, *result).dump(2) << "\n";
-    out.close();
-    if (!out) {
-      return ReportError(
-          Error{ErrorCode::kInvalidInput, "reconstruct", "cannot write report " + args.report});
+    if (Status s = WriteReport(args.report, ReportJson(args, *result), "reconstruct"); !s) {
+      return ReportError(s.error());
     }
   }
   const pipeline::RunStats& s = result->stats;
