@@ -24,6 +24,7 @@
 #include "engine/core/rng.h"
 #include "engine/detect/collinear_groups.h"
 #include "engine/detect/detect_planes.h"
+#include "engine/detect/segment_geometry.h"
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/eval/evaluate_planes.h"
@@ -137,9 +138,8 @@ void PrintMatching(const Scene& scene, const IdVector<PlaneId, Plane3>& detected
   auto fraction_near = [&](const Plane3& p, const std::vector<SegmentId>& members) {
     std::size_t near = 0;
     for (const SegmentId s : members) {
-      const Segment3& seg = scene.segments[s];
       const double d =
-          0.5 * (std::abs(p.SignedDistance(seg.p1)) + std::abs(p.SignedDistance(seg.p2)));
+          detect::SegmentPlaneDistance(scene.segments[s], p, SegmentDistance::kMeanEndpoint);
       near += d <= tol ? 1 : 0;
     }
     return members.empty() ? 0.0 : static_cast<double>(near) / members.size();
