@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include "engine/detect/segment_geometry.h"
+
 namespace linesurf::detect {
 namespace {
 /// Bucket widths of the line hash, as multiples of the tolerance (distance) and in radians
@@ -15,16 +17,13 @@ namespace {
 constexpr double kFootBucketOverTolerance = 100.0;
 constexpr double kDirectionBucket = 1e-3;
 
-double DistanceToLine(const Vec3& p, const Vec3& origin, const Vec3& unit) {
-  return (p - origin).cross(unit).norm();
-}
-
+/// Both endpoints of `b` within `tolerance` of the infinite line of `a`.
 bool OnLineOf(const Segment3& a, const Segment3& b, double tolerance) {
   const Vec3 d = a.p2 - a.p1;
   const double len = d.norm();
   if (!(len > 0.0)) return false;
-  const Vec3 u = d / len;
-  return DistanceToLine(b.p1, a.p1, u) <= tolerance && DistanceToLine(b.p2, a.p1, u) <= tolerance;
+  const CreaseLine line{a.p1, d / len};
+  return SegmentLineDistance(b, line, SegmentDistance::kMaxEndpoint) <= tolerance;
 }
 }  // namespace
 
