@@ -490,11 +490,16 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
   std::atomic<std::size_t> done{0};
   tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
     const std::vector<SegmentId>& ids = blocks[b].segments;
-    std::vector<Segment3> local(ids.size());
-    for (std::size_t i = 0; i < ids.size(); ++i) local[i] = lines[ids[i].index()];
+    // A single block holds every line in order: it works on `lines` itself, without a copy.
+    std::vector<Segment3> local;
+    if (!single) {
+      local.reserve(ids.size());
+      for (const SegmentId id : ids) local.push_back(lines[id.index()]);
+    }
     const std::uint64_t seed =
         single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, b);
-    Detector detector(local, options, epsilon, seed, single, ctx);
+    Detector detector(single ? lines : std::span<const Segment3>(local), options, epsilon, seed,
+                      single, ctx);
     detector.ExtractAll(block_stats[b]);
     found[b] = std::move(detector.planes());
     for (SupportedPlane& plane : found[b]) {
