@@ -1,12 +1,14 @@
 #include "tools/cli/cli_support.h"
 
+#include "engine/core/exception.h"
+
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
-
-#include "engine/core/exception.h"
 
 namespace linesurf::cli {
 namespace {
@@ -66,12 +68,24 @@ int GuardedRun(const std::function<int()>& fn) {
   }
 }
 
-Status WriteReport(const std::string& path, const nlohmann::json& report,
+int CheckStandardOutput(int code) {
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const int flush_errno = errno;  // from the first failed write or flush
+  if (flushed && std::cout && std::ferror(stdout) == 0) return code;
+  std::cerr << "linesurf: error: standard output: write failed"
+            << (flush_errno ? std::string(" (") + std::strerror(flush_errno) + ")" : "") << "\n";
+  return code == kExitOk ? kExitInvalidInput : code;
+}
+
+Status WriteReport(const std::filesystem::path& path,
+                   const nlohmann::json& report,
                    const std::string& stage) {
   std::ofstream out(path);
   out << report.dump(2) << "\n";
   out.close();
-  if (!out) return Error{ErrorCode::kInvalidInput, stage, "cannot write report " + path};
+  if (!out) return Error{ErrorCode::kInvalidInput, stage, path.string() + ": cannot be written"};
   return {};
 }
 

@@ -1,15 +1,17 @@
 #pragma once
 // Shared plumbing of the linesurf subcommands: exit codes, error printing, progress on stderr.
 
+#include "linesurf/error.h"
+
+#include "engine/core/run_context.h"
+
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-
-#include "linesurf/error.h"
-#include "engine/core/run_context.h"
 
 namespace linesurf::cli {
 
@@ -46,8 +48,12 @@ void ConfigureRunContext(const CommonOptions& common, RunContext& ctx);
 void PrintWarning(const CommonOptions& common, const std::string& message);
 /// Writes a run report (`--report`) as indented JSON; a file that cannot be written is an
 /// invalid-input error of `stage` naming it.
-Status WriteReport(const std::string& path, const nlohmann::json& report,
+Status WriteReport(const std::filesystem::path& path,
+                   const nlohmann::json& report,
                    const std::string& stage);
+/// Flushes stdout; when anything printed there was lost (e.g. a full device), reports it and
+/// turns a successful `code` into kExitInvalidInput, so a lost output is never exit 0.
+int CheckStandardOutput(int code);
 /// Runs `fn`, turning any escaping exception into an error message and exit code.
 int GuardedRun(const std::function<int()>& fn);
 

@@ -1,18 +1,19 @@
 // `linesurf arrange PLANES.json --box ...`: builds the exact cell complex of the planes inside a
 // box (debug subcommand) and prints its counts as one JSON object on stdout.
 
+#include "engine/io/reference_json.h"
+#include "partition/arrangement/build_cell_complex.h"
+#include "partition/arrangement/validate_cell_complex.h"
+#include "partition/arrangement/write_cells_ply.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
+
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
-
-#include "engine/io/reference_json.h"
-#include "partition/arrangement/build_cell_complex.h"
-#include "partition/arrangement/validate_cell_complex.h"
-#include "partition/arrangement/write_cells_ply.h"
-#include "tools/cli/commands.h"
 
 namespace linesurf::cli {
 namespace {
@@ -36,6 +37,10 @@ int Run(const ArrangeArgs& args, const CommonOptions& common) {
   partition::CellsPlyOptions ply_options;
   ply_options.shrink = args.shrink;
   if (auto valid = ply_options.Validate(); !valid) return ReportError(valid.error());
+  OutputFiles files("arrange");
+  files.AddInput(args.planes_path);
+  files.AddOutput("--cells-ply", args.cells_ply, {".ply"});
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
   auto scene = io::ReadReferenceJson(args.planes_path);
   if (!scene) return ReportError(scene.error());
 
@@ -82,10 +87,14 @@ int Run(const ArrangeArgs& args, const CommonOptions& common) {
   }
   if (!args.cells_ply.empty()) {
     ply_options.translation = centre;
-    if (auto written = partition::WriteCellsPly(cx, args.cells_ply, ply_options); !written) {
+    if (Status written = files.Write(
+            args.cells_ply,
+            [&](const auto& path) { return partition::WriteCellsPly(cx, path, ply_options); });
+        !written) {
       return ReportError(written.error());
     }
   }
+  if (Status s = files.Commit(); !s) return ReportError(s.error());
   std::cout << out.dump() << "\n";
   if (args.validate && !out["valid"].get<bool>()) return kExitInternal;
   return kExitOk;
@@ -101,8 +110,7 @@ Command AddArrangeCommand(CLI::App& app, CommonOptions& common) {
       "Debug: split a box by the planes of a reference JSON file (exact cell complex) and print "
       "its counts as JSON");
   cmd.app->add_option("PLANES", args->planes_path, "Reference JSON with `planes` (lines optional)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   cmd.app->add_option("--box", args->box, "XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX in the file's frame")
       ->required()
       ->delimiter(',')

@@ -1,14 +1,14 @@
 // `linesurf convert INPUT -o OUTPUT`: any input scene format to reference JSON.
 
-#include <iostream>
-#include <string>
-
-#include "engine/io/mesh_format.h"
 #include "engine/io/read_scene.h"
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
+
+#include <iostream>
+#include <string>
 
 namespace linesurf::cli {
 namespace {
@@ -35,10 +35,12 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
                     "Drop/fix bad elements first (as before a reconstruction); default: convert "
                     "values exactly as read");
   cmd.run = [args, &common]() -> int {
-    if (io::LowerExtension(args->output) != ".json") {
-      return ReportError(Error{ErrorCode::kInvalidOptions, "convert",
-                               args->output + ": the output must be a .json file"});
-    }
+    OutputFiles files("convert");
+    files.AddInput(args->scene.input);
+    files.AddInput(args->scene.nvm);
+    files.AddInput(args->scene.colmap);
+    files.AddOutput("-o", args->output, kJsonExtensions);
+    if (Status s = files.Prepare(); !s) return ReportError(s.error());
     auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
     if (!read) return ReportError(read.error());
     for (const std::string& w : read->warnings) {
@@ -51,8 +53,10 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
       for (const std::string& w : sanitized->warnings) PrintWarning(common, "sanitation: " + w);
       scene = std::move(sanitized->scene);
     }
-    const Status written = io::WriteReferenceJson(scene, args->output);
+    const Status written = files.Write(
+        args->output, [&](const auto& path) { return io::WriteReferenceJson(scene, path); });
     if (!written) return ReportError(written.error());
+    if (Status s = files.Commit(); !s) return ReportError(s.error());
     if (!common.quiet) {
       std::cerr << "linesurf: wrote " << args->output << " (" << scene.NumSegments()
                 << " segments, " << scene.viewpoints.size() << " viewpoints, "

@@ -1,18 +1,19 @@
 // `linesurf detect INPUT -o OUT.json`: plane detection only (docs/plane_detection.md).
 
-#include <cstdio>
-#include <fstream>
-#include <iomanip>
-#include <limits>
-#include <optional>
-#include <string>
-
 #include "engine/detect/detect_planes.h"
 #include "engine/io/read_scene.h"
 #include "engine/io/reference_json.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
+#include "tools/cli/output_files.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
+#include <string>
 
 namespace linesurf::cli {
 namespace {
@@ -112,6 +113,12 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
 }
 
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
+  OutputFiles files("detect");
+  files.AddInput(args.input);
+  files.AddOutput("-o", args.output, kJsonExtensions);
+  files.AddOutput("--vg", args.vg, {".vg"});
+  files.AddOutput("--report", args.report, {});
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
   Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
@@ -137,15 +144,28 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   const PlaneDetectionStats& st = detected->stats;
   if (!args.report.empty()) {
     const nlohmann::json report = DetectReportJson(common, args, *detected, scene.segments.size());
-    if (Status s = WriteReport(args.report, report, "detect"); !s) return ReportError(s.error());
+    if (Status s = files.Write(
+            args.report, [&](const auto& path) { return WriteReport(path, report, "detect"); });
+        !s) {
+      return ReportError(s.error());
+    }
   }
   scene.planes = std::move(detected->planes);
   scene.memberships = std::move(detected->memberships);
 
-  if (Status s = io::WriteReferenceJson(scene, args.output); !s) return ReportError(s.error());
-  if (!args.vg.empty()) {
-    if (Status s = WriteVertexGroups(scene, args.vg); !s) return ReportError(s.error());
+  if (Status s = files.Write(args.output,
+                             [&](const auto& path) { return io::WriteReferenceJson(scene, path); });
+      !s) {
+    return ReportError(s.error());
   }
+  if (!args.vg.empty()) {
+    if (Status s =
+            files.Write(args.vg, [&](const auto& path) { return WriteVertexGroups(scene, path); });
+        !s) {
+      return ReportError(s.error());
+    }
+  }
+  if (Status s = files.Commit(); !s) return ReportError(s.error());
   if (!common.quiet) {
     if (st.lines < static_cast<std::int64_t>(scene.segments.size())) {
       std::fprintf(stderr, "detect: collinear parts merged: %lld distinct lines detected on\n",
@@ -178,8 +198,7 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   cmd.app = app.add_subcommand("detect", "Detect planes in 3D line segments (RANSAC)");
   CLI::App* sub = cmd.app;
   sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++, .obj)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
   AddDetectionOptions(*sub, args->options, args->relative_epsilon);

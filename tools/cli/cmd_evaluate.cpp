@@ -1,8 +1,13 @@
 // `linesurf evaluate RESULT GT`: precision/completeness against a ground-truth mesh, topology.
 
+#include "engine/io/mesh_io.h"
+#include "engine/io/reference_json.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
+#include "tools/eval/evaluate_mesh.h"
+
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -10,11 +15,6 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-
-#include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
-#include "tools/cli/commands.h"
-#include "tools/eval/evaluate_mesh.h"
 
 namespace linesurf::cli {
 namespace {
@@ -98,6 +98,13 @@ void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
 
 int Run(const CommonOptions& common, const EvaluateArgs& args) {
   if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
+  OutputFiles files("evaluate");
+  files.AddInput(args.result_path);
+  files.AddInput(args.gt_path);
+  files.AddInput(args.visible_from);
+  const bool json_file = !args.json_path.empty() && args.json_path != "-";
+  if (json_file) files.AddOutput("--json", args.json_path, {});
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
   RunContext ctx;
   ConfigureRunContext(common, ctx);
   const auto start = std::chrono::steady_clock::now();
@@ -121,17 +128,15 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (args.json_path != "-") PrintTable(args, *result);
-  if (!args.json_path.empty()) {
-    const std::string text = ToJson(args, *result, seconds).dump(2) + "\n";
-    if (args.json_path == "-") {
-      std::cout << text;
-    } else {
-      std::ofstream out(args.json_path);
-      out << text;
-      if (!out) {
-        return ReportError(Error{ErrorCode::kInvalidInput, "evaluate", "cannot write " + args.json_path});
-      }
+  if (args.json_path == "-") std::cout << ToJson(args, *result, seconds).dump(2) << "\n";
+  if (json_file) {
+    const nlohmann::json json = ToJson(args, *result, seconds);
+    if (Status s = files.Write(
+            args.json_path, [&](const auto& path) { return WriteReport(path, json, "evaluate"); });
+        !s) {
+      return ReportError(s.error());
     }
+    if (Status s = files.Commit(); !s) return ReportError(s.error());
   }
   return kExitOk;
 }
@@ -147,15 +152,12 @@ Command AddEvaluateCommand(CLI::App& app, CommonOptions& common) {
       "truth), completeness (share of ground-truth samples near the result), distances and "
       "topology checks");
   cmd.app->add_option("RESULT", args->result_path, "Reconstructed mesh (.ply, .obj, .off)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd.app->add_option("GT", args->gt_path, "Ground-truth mesh (.ply, .obj, .off)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd.app
-      ->add_option("--visible-from", args->visible_from,
-                   "Reference JSON whose viewpoints restrict completeness to the ground truth they see")
-      ->check(CLI::ExistingFile);
+      ->required();
+  cmd.app->add_option("GT", args->gt_path, "Ground-truth mesh (.ply, .obj, .off)")->required();
+  cmd.app->add_option(
+      "--visible-from",
+      args->visible_from,
+      "Reference JSON whose viewpoints restrict completeness to the ground truth they see");
   cmd.app->add_option("--thresholds", args->options.thresholds, "Distance thresholds, increasing")
       ->delimiter(',')
       ->capture_default_str();

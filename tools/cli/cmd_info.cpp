@@ -1,6 +1,10 @@
 // `linesurf info INPUT`: what a scene file holds (counts, extent, histograms, warnings).
 
-#include <nlohmann/json.hpp>
+#include "engine/io/read_scene.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
+#include "tools/cli/scene_input.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +12,7 @@
 #include <iostream>
 #include <string>
 
-#include "engine/io/read_scene.h"
-#include "engine/pipeline/sanitize_scene.h"
-#include "tools/cli/commands.h"
-#include "tools/cli/scene_input.h"
+#include <nlohmann/json.hpp>
 
 namespace linesurf::cli {
 namespace {
@@ -177,6 +178,11 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
   AddSceneInputOptions(*cmd.app, args->scene);
   cmd.app->add_flag("--json", args->json, "Print the description as JSON on stdout");
   cmd.run = [args]() -> int {
+    OutputFiles files("info");
+    files.AddInput(args->scene.input);
+    files.AddInput(args->scene.nvm);
+    files.AddInput(args->scene.colmap);
+    if (Status s = files.Prepare(); !s) return ReportError(s.error());
     auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
     if (!read) return ReportError(read.error());
     nlohmann::json info = Describe(read->scene);

@@ -1,17 +1,18 @@
 // `linesurf reconstruct INPUT -o MESH.{ply,obj,off}`: the whole method (docs/reconstruction.md).
 
+#include "engine/io/mesh_io.h"
+#include "engine/io/read_scene.h"
+#include "engine/pipeline/reconstruct.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/detection_options.h"
+#include "tools/cli/output_files.h"
+
 #include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
-
-#include "engine/io/mesh_io.h"
-#include "engine/io/read_scene.h"
-#include "engine/pipeline/reconstruct.h"
-#include "tools/cli/commands.h"
-#include "tools/cli/detection_options.h"
 
 namespace linesurf::cli {
 namespace {
@@ -94,6 +95,11 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
 }
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
+  OutputFiles files("reconstruct");
+  files.AddInput(args.input);
+  files.AddOutput("-o", args.output, kMeshExtensions);
+  files.AddOutput("--report", args.report, {});
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
   Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
@@ -118,12 +124,21 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
 
   io::MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
-  if (Status s = io::WriteMesh(result->mesh, args.output, write); !s) return ReportError(s.error());
+  if (Status s = files.Write(
+          args.output, [&](const auto& path) { return io::WriteMesh(result->mesh, path, write); });
+      !s) {
+    return ReportError(s.error());
+  }
   if (!args.report.empty()) {
-    if (Status s = WriteReport(args.report, ReportJson(args, *result), "reconstruct"); !s) {
+    const nlohmann::json report = ReportJson(args, *result);
+    if (Status s =
+            files.Write(args.report,
+                        [&](const auto& path) { return WriteReport(path, report, "reconstruct"); });
+        !s) {
       return ReportError(s.error());
     }
   }
+  if (Status s = files.Commit(); !s) return ReportError(s.error());
   const pipeline::RunStats& s = result->stats;
   if (!common.quiet) {
     std::fprintf(stderr,
@@ -147,9 +162,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   cmd.app = app.add_subcommand(
       "reconstruct", "Reconstruct a closed piecewise-planar mesh from 3D line segments");
   CLI::App* sub = cmd.app;
-  sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++)")->required();
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
   sub->add_option("--planes", args->planes, "Planes: detect them, or use the input's (given)")
       ->capture_default_str()

@@ -1,16 +1,17 @@
 // `linesurf render`: PNG pictures of segments (coloured by plane membership) and/or a mesh.
 
+#include "engine/io/mesh_io.h"
+#include "engine/io/reference_json.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
+#include "tools/render/render_image.h"
+#include "tools/render/write_png.h"
+
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
-#include "tools/cli/commands.h"
-#include "tools/render/render_image.h"
-#include "tools/render/write_png.h"
 
 namespace linesurf::cli {
 namespace {
@@ -43,6 +44,11 @@ int Run(const RenderArgs& args_in) {
                                  Vec3(args.camera[3], args.camera[4], args.camera[5])};
   }
   if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
+  OutputFiles files("render");
+  files.AddInput(args.lines_path);
+  files.AddInput(args.mesh_path);
+  files.AddOutput("-o", args.output_path, {".png"});
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
   std::optional<Scene> scene;
   if (!args.lines_path.empty()) {
     auto read = io::ReadReferenceJson(args.lines_path);
@@ -57,7 +63,12 @@ int Run(const RenderArgs& args_in) {
   }
   auto image = RenderImage(scene ? &*scene : nullptr, mesh ? &*mesh : nullptr, args.options);
   if (!image) return ReportError(image.error());
-  if (auto written = WritePng(*image, args.output_path); !written) return ReportError(written.error());
+  if (Status written =
+          files.Write(args.output_path, [&](const auto& path) { return WritePng(*image, path); });
+      !written) {
+    return ReportError(written.error());
+  }
+  if (Status s = files.Commit(); !s) return ReportError(s.error());
   return kExitOk;
 }
 
@@ -70,8 +81,8 @@ Command AddRenderCommand(CLI::App& app, CommonOptions& /*common*/) {
       "render",
       "Write a PNG of segments (grey: no plane, blue: textural, red: structural) and/or a mesh "
       "(flat-shaded, outlined facets); side by side when both are given");
-  cmd.app->add_option("--lines", args->lines_path, "Segments as reference JSON")->check(CLI::ExistingFile);
-  cmd.app->add_option("--mesh", args->mesh_path, "Mesh (.ply, .obj, .off)")->check(CLI::ExistingFile);
+  cmd.app->add_option("--lines", args->lines_path, "Segments as reference JSON");
+  cmd.app->add_option("--mesh", args->mesh_path, "Mesh (.ply, .obj, .off)");
   cmd.app->add_option("-o,--output", args->output_path, "Output PNG")->required();
   cmd.app->add_option("--view", args->options.view, "iso, iso-back, front, back, left, right or top")
       ->capture_default_str();

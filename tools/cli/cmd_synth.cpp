@@ -1,21 +1,21 @@
 // `linesurf synth FAMILY --seed S [--size N] [--noise SIGMA] [--outliers FRACTION] -o DIR`:
 // a seeded synthetic scene with ground truth (docs/synthetic.md).
 
+#include "engine/core/parallel.h"
+#include "engine/io/mesh_io.h"
+#include "engine/io/reference_json.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_files.h"
+#include "tools/gen/synthesize.h"
+#include "tools/gen/synthetic_meta.h"
+
+#include <tbb/task_arena.h>
+
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <string>
-
-#include <tbb/task_arena.h>
-
-#include "engine/core/parallel.h"
-
-#include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
-#include "tools/cli/commands.h"
-#include "tools/gen/synthesize.h"
-#include "tools/gen/synthetic_meta.h"
 
 namespace linesurf::cli {
 namespace {
@@ -38,26 +38,40 @@ int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   if (args.max_trim >= 0.0) spec.max_trim = args.max_trim;
   if (Status valid = spec.Validate(); !valid) return ReportError(valid.error());
 
-  tbb::task_arena arena(ArenaConcurrency(common.threads));
-  Expected<synth::SyntheticScene> scene = arena.execute([&] { return synth::Synthesize(spec); });
-  if (!scene) return ReportError(scene.error());
-
   const std::filesystem::path dir(args.out_dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) {
-    return ReportError(Error{ErrorCode::kInvalidInput, "synth",
-                             dir.string() + ": cannot create directory: " + ec.message()});
+    return ReportError(Error{ErrorCode::kInvalidOptions,
+                             "synth",
+                             dir.string() + ": -o: cannot create directory: " + ec.message()});
   }
-  if (Status s = io::WriteReferenceJson(scene->scene, dir / "lines.json"); !s) {
+  OutputFiles files("synth");
+  files.AddOutput("-o", dir / "lines.json", kJsonExtensions);
+  files.AddOutput("-o", dir / "ground_truth.ply", kMeshExtensions);
+  files.AddOutput("-o", dir / "meta.json", kJsonExtensions);
+  if (Status s = files.Prepare(); !s) return ReportError(s.error());
+
+  tbb::task_arena arena(ArenaConcurrency(common.threads));
+  Expected<synth::SyntheticScene> scene = arena.execute([&] { return synth::Synthesize(spec); });
+  if (!scene) return ReportError(scene.error());
+  if (Status s =
+          files.Write(dir / "lines.json",
+                      [&](const auto& p) { return io::WriteReferenceJson(scene->scene, p); });
+      !s) {
     return ReportError(s.error());
   }
-  if (Status s = io::WriteMesh(scene->ground_truth, dir / "ground_truth.ply"); !s) {
+  if (Status s = files.Write(dir / "ground_truth.ply",
+                             [&](const auto& p) { return io::WriteMesh(scene->ground_truth, p); });
+      !s) {
     return ReportError(s.error());
   }
-  if (Status s = synth::WriteSyntheticMeta(*scene, dir / "meta.json"); !s) {
+  if (Status s = files.Write(dir / "meta.json",
+                             [&](const auto& p) { return synth::WriteSyntheticMeta(*scene, p); });
+      !s) {
     return ReportError(s.error());
   }
+  if (Status s = files.Commit(); !s) return ReportError(s.error());
   if (!common.quiet) {
     std::map<synth::SegmentKind, std::size_t> kinds;
     for (synth::SegmentKind k : scene->kinds) ++kinds[k];

@@ -29,10 +29,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitUsage;
+    return CheckStandardOutput(code == 0 ? kExitOk : kExitUsage);
   }
   for (const Command& cmd : commands) {
-    if (cmd.app->parsed()) return GuardedRun(cmd.run);
+    if (cmd.app->parsed()) return CheckStandardOutput(GuardedRun(cmd.run));
   }
   return kExitUsage;
 }

@@ -1,0 +1,37 @@
+#pragma once
+// One hostile case of the robustness suite: inputs it generates, the command it runs, and the
+// contract the run must keep (docs/user/errors.md).
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace linesurf::robustness {
+
+struct HostileCase {
+  using Maker = std::function<void(const std::filesystem::path& dir)>;
+  std::string kind;  ///< malformed file, degenerate geometry, extreme coordinates, ...
+  std::string name;  ///< unique, [A-Za-z0-9_]
+  /// Writes the case's inputs into the (empty) directory it gets.
+  Maker make;
+  /// Arguments of `linesurf`, run with the case's directory as working directory.
+  std::string args;
+  int exit_code = 0;
+  /// Strings stderr must contain (the file, the place); failed runs must also start their error
+  /// line with "linesurf: error: ".
+  std::vector<std::string> message;
+  /// Files (relative to the directory) a successful run must create; a failed run creates none.
+  std::vector<std::string> outputs;
+  /// Where stdout goes ("" = a capture file; e.g. "/dev/full").
+  std::string stdout_to;
+};
+
+/// Helpers the generators share.
+void WriteFile(const std::filesystem::path& path, const std::string& content);
+/// A small valid scene: the synthetic cube (12 edges, viewpoints), as reference JSON.
+std::string CubeSceneJson();
+/// A closed unit cube mesh as ASCII OFF, its vertices scaled by `scale`.
+std::string CubeOff(double scale = 1.0);
+
+}  // namespace linesurf::robustness

@@ -1,0 +1,15 @@
+#pragma once
+// The generators of hostile cases, one per kind (one file each).
+
+#include "tests/robustness/hostile_case.h"
+
+#include <vector>
+
+namespace linesurf::robustness {
+
+std::vector<HostileCase> OutputPathCases();
+
+/// Every case of every kind.
+std::vector<HostileCase> AllHostileCases();
+
+}  // namespace linesurf::robustness
