@@ -448,15 +448,32 @@ CollinearGroups LinesToDetect(const Scene& scene, const PlaneDetectionOptions& o
   return groups;
 }
 
+/// The block grid of per-block detection run on its own: whole cubes of side block_size from the
+/// minimum of the lines' midpoints, floor(extent / block_size) + 1 per axis, so every midpoint
+/// lies inside the grid (not on its last face) and results are those of the round-1 cubes.
+partition::BlockGrid DetectionGrid(std::span<const Segment3> lines, double block_size) {
+  const Box3 box = MidpointBox(lines);
+  const Eigen::Vector3d blocks = (box.Extent() / block_size).array().floor() + 1.0;
+  Expected<partition::BlockGrid> grid =
+      partition::BlockGrid::CreateWholeBlocks(box.min, block_size, blocks);
+  LINESURF_THROW_IF(!grid,
+                    kInvalidOptions,
+                    kStage,
+                    "PlaneDetectionOptions.block_size "
+                        << block_size << " does not fit a scene of extent "
+                        << box.Extent().maxCoeff() << ": " << grid.error().message);
+  return std::move(grid).value();
+}
+
 /// The blocks of per-block detection; one block holding every line when block_size is 0.
 std::vector<DetectionBlock> SplitIntoBlocks(std::span<const Segment3> lines,
                                             const PlaneDetectionOptions& options) {
   if (options.block_size > 0.0) {
+    if (lines.empty()) return {};
     BlockLayout layout;
-    layout.block_size = options.block_size;
     layout.halo = options.block_halo;
     layout.max_home_segments = static_cast<std::size_t>(options.block_max_segments);
-    return AssignDetectionBlocks(lines, layout);
+    return AssignDetectionBlocks(lines, DetectionGrid(lines, options.block_size), layout);
   }
   DetectionBlock all;
   all.segments.reserve(lines.size());

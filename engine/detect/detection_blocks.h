@@ -1,11 +1,13 @@
 #pragma once
-// The coarse blocks of per-block plane detection (DESIGN section 3, step 2; internal to
-// engine/detect): every segment has one home block (the block holding its midpoint) and is also
-// given to the blocks whose box, dilated by the halo, holds its midpoint. A block with too many
-// home segments is split into 8 children, recursively (an octree over the crowded places).
+// The blocks of per-block plane detection (DESIGN section 3, step 2; internal to engine/detect),
+// on the block engine's one grid (partition/voxel/block_grid.h): every segment has one home
+// block (the leaf block holding its midpoint) and is also given to the leaf blocks whose box,
+// dilated by the halo, holds its midpoint. A block with too many home segments is replaced by its
+// 8 children, recursively (an octree over the crowded places).
 
 #include "engine/core/geometry.h"
 #include "engine/core/strong_id.h"
+#include "partition/voxel/block_grid.h"
 
 #include <cstdint>
 #include <span>
@@ -14,23 +16,25 @@
 namespace linesurf::detect {
 
 struct DetectionBlock {
-  Box3 box;       ///< the block's cube (without halo)
-  int depth = 0;  ///< 0 for a grid block, +1 per split
+  partition::BlockKey key;  ///< the block in the grid; key.level is its depth
+  Box3 box;                 ///< grid.BlockBox(key) (without halo)
   /// Segments whose midpoint lies in the block dilated by its halo (ascending). Includes every
   /// segment whose home block this is.
   std::vector<SegmentId> segments;
 };
 
 struct BlockLayout {
-  double block_size = 0.0;  ///< side of the grid blocks anchored at the midpoints' minimum (> 0)
-  double halo = 0.1;        ///< halo as a fraction of a block's side, [0, 0.5)
+  double halo = 0.1;                  ///< halo as a fraction of a block's nominal side, [0, 0.5)
   std::size_t max_home_segments = 0;  ///< split a block with more home segments (0 = never)
 };
 
-/// The occupied blocks, grid blocks in increasing (z, y, x), a split block replaced by its
-/// children in the same order. Throws kInvalidOptions when the grid would need more than 2^20
-/// blocks along one axis.
+/// The box of per-block detection when no grid is given: the box of the segments' midpoints.
+Box3 MidpointBox(std::span<const Segment3> segments);
+
+/// The occupied blocks of `grid`, base blocks in increasing (z, y, x), a split block replaced by
+/// its children in the same order. A block's nominal side at level L is block_size / 2^L.
 std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segments,
+                                                  const partition::BlockGrid& grid,
                                                   const BlockLayout& layout);
 
 }  // namespace linesurf::detect

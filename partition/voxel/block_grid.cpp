@@ -1,119 +1,143 @@
 #include "partition/voxel/block_grid.h"
 
-#include <openvdb/openvdb.h>
+#include "engine/core/exception.h"
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-
-#include "engine/core/exception.h"
 
 namespace linesurf::partition {
 namespace {
 
 constexpr const char* kStage = "block_grid";
+/// Keeps the indices of the deepest level within int32: 2^18 base blocks times 2^12.
+constexpr double kMaxBlocksPerAxis = 1 << 18;
 
-// Visits the integer cells crossed by segment a->b (in block units), Amanatides-Woo.
-template <typename Visit>
-void WalkCells(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3i& dims,
-               Visit&& visit) {
-  const auto clamp_cell = [&](const Eigen::Vector3d& p) {
-    Eigen::Vector3i c;
-    for (int k = 0; k < 3; ++k) c[k] = std::clamp(static_cast<int>(std::floor(p[k])), 0, dims[k] - 1);
-    return c;
-  };
-  Eigen::Vector3i cell = clamp_cell(a);
-  const Eigen::Vector3i last = clamp_cell(b);
-  const Eigen::Vector3d d = b - a;
-  Eigen::Vector3i step;
-  Eigen::Vector3d t_max, t_delta;
-  for (int k = 0; k < 3; ++k) {
-    step[k] = d[k] > 0 ? 1 : (d[k] < 0 ? -1 : 0);
-    if (step[k] == 0) {
-      t_max[k] = t_delta[k] = std::numeric_limits<double>::infinity();
-    } else {
-      const double boundary = cell[k] + (step[k] > 0 ? 1.0 : 0.0);
-      t_max[k] = (boundary - a[k]) / d[k];
-      t_delta[k] = 1.0 / std::abs(d[k]);
-    }
-  }
-  const int max_steps = (last - cell).cwiseAbs().sum() + 1;
-  for (int i = 0; i < max_steps; ++i) {
-    visit(cell);
-    if (cell == last) return;
-    int k = 0;
-    if (t_max[1] < t_max[k]) k = 1;
-    if (t_max[2] < t_max[k]) k = 2;
-    if (t_max[k] > 1.0) return;
-    cell[k] += step[k];
-    if (cell[k] < 0 || cell[k] >= dims[k]) return;
-    t_max[k] += t_delta[k];
-  }
+}  // namespace
+
+namespace {
+
+void CheckBlockSize(double block_size) {
+  LINESURF_THROW_IF(!(block_size > 0.0) || !std::isfinite(block_size),
+                    kInvalidOptions,
+                    kStage,
+                    "block_size must be a positive finite length, got " << block_size);
 }
 
 }  // namespace
 
-Box3 BlockGrid::BlockBox(BlockId b) const {
+BlockGrid BlockGrid::Make(const Vec3& origin,
+                          double block_size,
+                          const Eigen::Vector3d& blocks,
+                          const Vec3* clip_max,
+                          const BlockGridOptions& options) {
+  LINESURF_THROW_IF(blocks.prod() > static_cast<double>(options.max_blocks),
+                    kResourceExhausted,
+                    kStage,
+                    "block grid of " << blocks.transpose() << " blocks exceeds max_blocks "
+                                     << options.max_blocks);
+  LINESURF_THROW_IF((blocks.array() > kMaxBlocksPerAxis).any(),
+                    kResourceExhausted,
+                    kStage,
+                    "block grid of " << blocks.transpose() << " blocks exceeds "
+                                     << kMaxBlocksPerAxis << " blocks along one axis");
+  BlockGrid grid;
+  grid.block_size_ = block_size;
+  grid.dims_ = blocks.cast<int>();
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double>& table = grid.faces_[a];
+    table.resize(grid.dims_[a] + 1);
+    for (int i = 0; i <= grid.dims_[a]; ++i) table[i] = origin[a] + i * block_size;
+    if (clip_max != nullptr) table.back() = (*clip_max)[a];
+    for (int i = 0; i < grid.dims_[a]; ++i) {
+      LINESURF_THROW_IF(!(table[i] < table[i + 1]) || !std::isfinite(table[i + 1]),
+                        kInvalidOptions,
+                        kStage,
+                        "block_size " << block_size << " gives an empty block along axis " << a);
+    }
+    grid.box_.min[a] = table.front();
+    grid.box_.max[a] = table.back();
+  }
+  return grid;
+}
+
+Expected<BlockGrid> BlockGrid::Create(const Box3& box,
+                                      double block_size,
+                                      const BlockGridOptions& options) noexcept {
+  return CatchAll(kStage, [&]() -> BlockGrid {
+    CheckBlockSize(block_size);
+    LINESURF_THROW_IF(box.IsEmpty() || !box.min.allFinite() || !box.max.allFinite() ||
+                          !(box.min.array() < box.max.array()).all(),
+                      kInvalidInput,
+                      kStage,
+                      "the grid box must be finite with min < max on every axis");
+    const Eigen::Vector3d blocks = (box.Extent() / block_size).array().ceil().max(1.0);
+    return Make(box.min, block_size, blocks, &box.max, options);
+  });
+}
+
+Expected<BlockGrid> BlockGrid::CreateWholeBlocks(const Vec3& origin,
+                                                 double block_size,
+                                                 const Eigen::Vector3d& blocks,
+                                                 const BlockGridOptions& options) noexcept {
+  return CatchAll(kStage, [&]() -> BlockGrid {
+    CheckBlockSize(block_size);
+    LINESURF_THROW_IF(!origin.allFinite() || !blocks.allFinite() || (blocks.array() < 1.0).any(),
+                      kInvalidInput,
+                      kStage,
+                      "a grid needs a finite origin and at least one block per axis");
+    return Make(origin, block_size, blocks.array().floor().matrix(), nullptr, options);
+  });
+}
+
+double BlockGrid::Face(int axis, std::int32_t level, std::int64_t index) const {
+  if (level == 0) return faces_[axis][static_cast<std::size_t>(index)];
+  if (index % 2 == 0) return Face(axis, level - 1, index / 2);
+  return 0.5 * (Face(axis, level - 1, index / 2) + Face(axis, level - 1, index / 2 + 1));
+}
+
+Box3 BlockGrid::BlockBox(const BlockKey& key) const {
   Box3 out;
-  out.min = box.min + block_coords[b.index()].cast<double>() * block_size;
-  out.max = out.min + Eigen::Vector3d::Constant(block_size);
+  for (int a = 0; a < 3; ++a) {
+    out.min[a] = Face(a, key.level, key.index[a]);
+    out.max[a] = Face(a, key.level, std::int64_t{key.index[a]} + 1);
+  }
   return out;
 }
 
-Expected<BlockGrid> BuildBlockGrid(std::span<const Segment3> segments, const Box3& box,
-                                   const BlockGridOptions& options) noexcept {
-  return CatchAll(kStage, [&]() -> BlockGrid {
-    LINESURF_THROW_IF(!(options.block_size > 0.0) || !std::isfinite(options.block_size),
-                      kInvalidOptions, kStage,
-                      "block_size must be a positive finite length, got " << options.block_size);
-    LINESURF_THROW_IF(box.IsEmpty(), kInvalidInput, kStage, "the scene box is empty");
-    BlockGrid grid;
-    grid.block_size = options.block_size;
-    grid.box.min = box.min;
-    const Eigen::Vector3d blocks = (box.Extent() / options.block_size).array().ceil().max(1.0);
-    LINESURF_THROW_IF(blocks.prod() > static_cast<double>(options.max_blocks), kResourceExhausted,
-                      kStage, "block grid of " << blocks.transpose() << " blocks exceeds max_blocks "
-                                               << options.max_blocks);
-    grid.dims = blocks.cast<int>();
-    grid.box.max = box.min + grid.dims.cast<double>() * options.block_size;
+int BlockGrid::LocateAxis(int axis, double x) const {
+  const std::vector<double>& table = faces_[axis];
+  // First face above x, minus one: face[i] <= x < face[i + 1].
+  const auto above = std::upper_bound(table.begin(), table.end(), x);
+  const auto i = static_cast<int>(above - table.begin()) - 1;
+  return std::clamp(i, 0, dims_[axis] - 1);
+}
 
-    // Sparse occupancy: an OpenVDB grid maps block coordinates to a dense slot index, so empty
-    // space costs nothing however large the box.
-    openvdb::Int32Grid::Ptr slots = openvdb::Int32Grid::create(-1);
-    auto accessor = slots->getAccessor();
-    std::vector<std::vector<SegmentId>> members;
-    std::vector<Eigen::Vector3i> coords;
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-      const Eigen::Vector3d a = (segments[s].p1 - box.min) / options.block_size;
-      const Eigen::Vector3d b = (segments[s].p2 - box.min) / options.block_size;
-      WalkCells(a, b, grid.dims, [&](const Eigen::Vector3i& c) {
-        const openvdb::Coord key(c.x(), c.y(), c.z());
-        int slot = accessor.getValue(key);
-        if (slot < 0) {
-          slot = static_cast<int>(members.size());
-          accessor.setValue(key, slot);
-          members.emplace_back();
-          coords.push_back(c);
-        }
-        if (members[slot].empty() || members[slot].back() != SegmentId(s)) {
-          members[slot].push_back(SegmentId(s));
-        }
-      });
-    }
-    // Canonical order: by linear block index, independent of segment order.
-    std::vector<std::size_t> order(coords.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    const auto linear = [&](const Eigen::Vector3i& c) {
-      return (static_cast<std::int64_t>(c.z()) * grid.dims.y() + c.y()) * grid.dims.x() + c.x();
-    };
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t i, std::size_t j) { return linear(coords[i]) < linear(coords[j]); });
-    for (std::size_t i : order) {
-      grid.block_coords.push_back(coords[i]);
-      grid.block_segments.AddRow(members[i]);
-    }
-    return grid;
-  });
+Eigen::Vector3i BlockGrid::Locate(const Vec3& p) const {
+  return {LocateAxis(0, p.x()), LocateAxis(1, p.y()), LocateAxis(2, p.z())};
+}
+
+BlockKey BlockGrid::ChildHolding(const BlockKey& parent, const Vec3& p) const {
+  BlockKey child{parent.level + 1, 2 * parent.index};
+  for (int a = 0; a < 3; ++a) {
+    if (p[a] >= Face(a, child.level, std::int64_t{child.index[a]} + 1)) ++child.index[a];
+  }
+  return child;
+}
+
+std::array<BlockKey, 8> BlockGrid::Children(const BlockKey& parent) const {
+  std::array<BlockKey, 8> out;
+  for (int c = 0; c < 8; ++c) {
+    out[c] = {parent.level + 1,
+              2 * parent.index + Eigen::Vector3i(c & 1, (c >> 1) & 1, (c >> 2) & 1)};
+  }
+  return out;
+}
+
+Eigen::Vector3i BlockGrid::BaseFromLinear(std::int64_t linear) const {
+  const std::int64_t nx = dims_.x(), ny = dims_.y();
+  return {static_cast<int>(linear % nx),
+          static_cast<int>((linear / nx) % ny),
+          static_cast<int>(linear / (nx * ny))};
 }
 
 }  // namespace linesurf::partition

@@ -1,0 +1,69 @@
+#include "partition/voxel/block_size_rule.h"
+
+#include "engine/core/rng.h"
+
+#include <gtest/gtest.h>
+
+namespace linesurf::partition {
+namespace {
+
+std::vector<Segment3> RandomSegments(int n, double extent, double length, std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<Segment3> out;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a(rng.Uniform(0, extent), rng.Uniform(0, extent), rng.Uniform(0, extent));
+    out.push_back({a, a + Vec3(length, 0, 0)});
+  }
+  return out;
+}
+
+Box3 Cube(double extent) {
+  Box3 box;
+  box.Extend(Vec3::Zero());
+  box.Extend(Vec3::Constant(extent));
+  return box;
+}
+
+TEST(ChooseBlockSize, ASparseSceneIsOneBlock) {
+  const auto choice = ChooseBlockSize(RandomSegments(500, 10, 0.5, 1), Cube(10), {});
+  ASSERT_TRUE(choice) << choice.error().ToString();
+  EXPECT_EQ(choice->halvings, 0);
+  EXPECT_EQ(choice->block_size, 10.0);
+}
+
+TEST(ChooseBlockSize, DenseScenesAreHalvedUntilTheMeanFitsTheTarget) {
+  BlockSizeRule rule;
+  rule.target_segments_per_block = 100;
+  rule.min_block_lengths = 1;
+  const auto segments = RandomSegments(20000, 64, 0.5, 2);
+  const auto choice = ChooseBlockSize(segments, Cube(64), rule);
+  ASSERT_TRUE(choice) << choice.error().ToString();
+  // Uniform density: 20,000 / 8^k <= 100 first at k = 3 (39 per block), with all 512 occupied.
+  EXPECT_EQ(choice->halvings, 3);
+  EXPECT_EQ(choice->block_size, 8.0);
+  EXPECT_EQ(choice->occupied_blocks, 512u);
+  EXPECT_LE(choice->mean_segments_per_block, 100.0);
+  EXPECT_FALSE(choice->limited_by_length);
+}
+
+TEST(ChooseBlockSize, BlocksStayLongerThanTheSegments) {
+  BlockSizeRule rule;
+  rule.target_segments_per_block = 1;  // unreachable
+  rule.min_block_lengths = 4;
+  const auto choice = ChooseBlockSize(RandomSegments(5000, 64, 2.0, 3), Cube(64), rule);
+  ASSERT_TRUE(choice) << choice.error().ToString();
+  EXPECT_EQ(choice->block_size, 8.0);  // 4 is below 4 * 2
+  EXPECT_TRUE(choice->limited_by_length);
+}
+
+TEST(ChooseBlockSize, RejectsBadRules) {
+  BlockSizeRule rule;
+  rule.target_segments_per_block = 0;
+  EXPECT_FALSE(ChooseBlockSize({}, Cube(1), rule));
+  rule = {};
+  rule.min_block_lengths = -1;
+  EXPECT_FALSE(ChooseBlockSize({}, Cube(1), rule));
+}
+
+}  // namespace
+}  // namespace linesurf::partition
