@@ -192,6 +192,7 @@ class Detector {
       for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
       planes_.push_back({plane, std::move(inliers)});
     }
+    if (static_cast<std::int32_t>(planes_.size()) >= options_.max_planes) stats.capped_blocks = 1;
   }
 
   std::vector<detect::SupportedPlane>& planes() { return planes_; }
@@ -528,6 +529,7 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     stats.candidates_evaluated += block_stats[b].candidates_evaluated;
     stats.failed_draws += block_stats[b].failed_draws;
+    stats.capped_blocks += block_stats[b].capped_blocks;
     for (SupportedPlane& plane : found[b]) planes.push_back(std::move(plane));
   }
   return planes;

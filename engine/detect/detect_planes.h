@@ -126,6 +126,8 @@ struct PlaneDetectionStats {
   /// rule after merging the blocks' planes.
   std::int64_t blocks = 0;
   std::int64_t memberships_dropped = 0;
+  /// Blocks whose RANSAC stopped because it reached max_planes (planes may be missing there).
+  std::int64_t capped_blocks = 0;
   double epsilon = 0.0;  ///< the eps actually used (scene units)
   double seconds = 0.0;
   double seconds_fusion = 0.0;

@@ -575,6 +575,9 @@ Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& sce
          "structural segments with nearly parallel planes treated as textural");
     warn(stats.samples_outside_box, "segment samples outside the box skipped");
     warn(stats.viewpoints_outside_box, "observations from viewpoints outside the box: no prior");
+    warn(stats.grazing_samples,
+         "segment samples skipped: the viewpoint lies in the segment's plane (no evidence)");
+    result.viewpoint_cells = std::move(viewpoint_cells);
     return result;
   });
 }

@@ -95,6 +95,8 @@ struct EvidenceStats {
 struct EvidenceResult {
   solver::EnergyInput energy;
   EvidenceStats stats;
+  /// The cell holding each viewpoint (invalid outside the box).
+  IdVector<ViewpointId, CellId> viewpoint_cells;
   std::vector<std::string> warnings;
 };
 

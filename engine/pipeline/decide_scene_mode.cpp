@@ -2,8 +2,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <vector>
 
@@ -12,6 +14,14 @@ namespace {
 
 /// Rays nearly parallel to a plane (|n.d| under this) do not hit it.
 constexpr double kMinRayPlaneCosine = 1e-6;
+/// In-plane directions that must each cross an inlier for a hit point to be surrounded.
+constexpr std::size_t kInPlaneDirections = 8;
+/// An in-plane direction and an inlier closer to parallel than this sine do not cross.
+constexpr double kParallelSine = 1e-12;
+
+using Vec2 = Eigen::Vector2d;
+
+double Cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 std::array<Vec3, 14> RayDirections() {
   std::array<Vec3, 14> dirs;
@@ -31,51 +41,116 @@ std::array<Vec3, 14> RayDirections() {
   return dirs;
 }
 
-}  // namespace
+std::array<Vec2, kInPlaneDirections> InPlaneDirections() {
+  std::array<Vec2, kInPlaneDirections> dirs;
+  for (std::size_t k = 0; k < kInPlaneDirections; ++k) {
+    const double a = 2.0 * std::numbers::pi * static_cast<double>(k) / kInPlaneDirections;
+    dirs[k] = Vec2(std::cos(a), std::sin(a));
+  }
+  return dirs;
+}
 
-SceneModeDecision DecideSceneMode(const Scene& scene, double support_margin_rel) {
-  SceneModeDecision decision;
-  Box3 scene_box;
-  for (const Segment3& s : scene.segments) {
-    scene_box.Extend(s.p1);
-    scene_box.Extend(s.p2);
+/// A plane with its inliers projected into an in-plane frame (lengthened to bridge gaps).
+struct PlaneOutline {
+  Plane3 plane;
+  Vec3 u = Vec3::Zero();
+  Vec3 w = Vec3::Zero();
+  std::vector<Vec2> from;
+  std::vector<Vec2> to;
+  std::vector<double> on_line_tolerance;  ///< gap_bridge x the inlier's length
+  Vec2 min = Vec2::Constant(std::numeric_limits<double>::infinity());
+  Vec2 max = Vec2::Constant(-std::numeric_limits<double>::infinity());
+
+  [[nodiscard]] Vec2 Project(const Vec3& p) const {
+    const Vec3 d = p - plane.point;
+    return {d.dot(u), d.dot(w)};
   }
-  std::vector<std::uint8_t> observing(scene.viewpoints.size(), 0);
-  for (const ViewpointId v : scene.observations.items()) observing[v.index()] = 1;
-  for (const std::uint8_t o : observing) decision.observing_viewpoints += o;
-  if (scene.planes.empty() || !scene.HasMemberships() || scene_box.IsEmpty()) {
-    decision.reason = "auto: no planes -> exterior";
-    return decision;
+  void Add(const Segment3& s, double gap_bridge) {
+    const Vec2 a = Project(s.p1);
+    const Vec2 b = Project(s.p2);
+    const Vec2 grow = gap_bridge * (b - a);
+    on_line_tolerance.push_back(grow.norm());
+    from.push_back(a - grow);
+    to.push_back(b + grow);
+    min = min.cwiseMin(from.back()).cwiseMin(to.back());
+    max = max.cwiseMax(from.back()).cwiseMax(to.back());
   }
-  // Support boxes of the planes.
-  std::vector<Box3> support(scene.planes.size());
+  /// `h` lies on an inlier, or each in-plane direction from `h` crosses some inlier.
+  [[nodiscard]] bool Surrounds(const Vec2& h,
+                               const std::array<Vec2, kInPlaneDirections>& dirs) const {
+    if (!((h.array() >= min.array()).all() && (h.array() <= max.array()).all())) return false;
+    std::array<bool, kInPlaneDirections> crossed{};
+    std::size_t num_crossed = 0;
+    for (std::size_t i = 0; i < from.size() && num_crossed < kInPlaneDirections; ++i) {
+      const Vec2 e = to[i] - from[i];
+      if (!(e.squaredNorm() > 0.0)) continue;  // seen end-on: no extent in the plane
+      const Vec2 ah = from[i] - h;
+      // On the lengthened inlier itself (within the bridged length of it): the ray meets a line.
+      const double along = std::clamp(-ah.dot(e) / e.squaredNorm(), 0.0, 1.0);
+      if ((ah + along * e).norm() <= on_line_tolerance[i]) return true;
+      for (std::size_t k = 0; k < kInPlaneDirections; ++k) {
+        if (crossed[k]) continue;
+        const double denom = Cross2(dirs[k], e);
+        if (std::abs(denom) <= kParallelSine * e.norm()) continue;  // no single crossing
+        const double t = Cross2(ah, e) / denom;                     // along the direction
+        const double s = Cross2(ah, dirs[k]) / denom;               // along the inlier
+        if (t > 0.0 && s >= 0.0 && s <= 1.0) {
+          crossed[k] = true;
+          ++num_crossed;
+        }
+      }
+    }
+    return num_crossed == kInPlaneDirections;
+  }
+};
+
+std::vector<PlaneOutline> Outlines(const Scene& scene, double gap_bridge) {
+  std::vector<PlaneOutline> outlines(scene.planes.size());
+  for (std::size_t p = 0; p < outlines.size(); ++p) {
+    PlaneOutline& o = outlines[p];
+    o.plane = scene.planes[PlaneId(p)];
+    o.plane.normal.normalize();
+    const Vec3& n = o.plane.normal;
+    const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    o.u = n.cross(helper).normalized();
+    o.w = n.cross(o.u);
+  }
   for (std::size_t s = 0; s < scene.NumSegments(); ++s) {
     const PlaneMembership& m = scene.memberships[SegmentId(s)];
     for (std::uint8_t k = 0; k < m.count; ++k) {
-      support[m.planes[k].index()].Extend(scene.segments[SegmentId(s)].p1);
-      support[m.planes[k].index()].Extend(scene.segments[SegmentId(s)].p2);
+      outlines[m.planes[k].index()].Add(scene.segments[SegmentId(s)], gap_bridge);
     }
   }
-  const double margin = support_margin_rel * scene_box.Extent().norm();
-  for (Box3& b : support) {
-    if (b.IsEmpty()) continue;
-    b.min.array() -= margin;
-    b.max.array() += margin;
+  return outlines;
+}
+
+}  // namespace
+
+SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& options) {
+  SceneModeDecision decision;
+  std::vector<std::uint8_t> observing(scene.viewpoints.size(), 0);
+  for (const ViewpointId v : scene.observations.items()) observing[v.index()] = 1;
+  for (const std::uint8_t o : observing) decision.observing_viewpoints += o;
+  if (scene.planes.empty() || !scene.HasMemberships() || scene.NumSegments() == 0) {
+    decision.reason = "auto: no planes -> exterior";
+    return decision;
   }
+  const std::vector<PlaneOutline> outlines = Outlines(scene, options.gap_bridge);
   const std::array<Vec3, 14> dirs = RayDirections();
+  const std::array<Vec2, kInPlaneDirections> in_plane = InPlaneDirections();
   for (std::size_t v = 0; v < scene.viewpoints.size(); ++v) {
     if (observing[v] == 0) continue;
     const Vec3& o = scene.viewpoints[ViewpointId(v)];
     bool enclosed = true;
     for (const Vec3& d : dirs) {
       bool hit = false;
-      for (std::size_t p = 0; p < scene.planes.size() && !hit; ++p) {
-        if (support[p].IsEmpty()) continue;
-        const Plane3& plane = scene.planes[PlaneId(p)];
-        const double nd = plane.normal.dot(d);
+      for (std::size_t p = 0; p < outlines.size() && !hit; ++p) {
+        const PlaneOutline& outline = outlines[p];
+        if (outline.from.empty()) continue;
+        const double nd = outline.plane.normal.dot(d);
         if (std::abs(nd) < kMinRayPlaneCosine) continue;
-        const double t = -plane.SignedDistance(o) / nd;
-        hit = t > 0.0 && support[p].Contains(o + t * d);
+        const double t = -outline.plane.SignedDistance(o) / nd;
+        hit = t > 0.0 && outline.Surrounds(outline.Project(o + t * d), in_plane);
       }
       if (!hit) {
         enclosed = false;
@@ -85,6 +160,12 @@ SceneModeDecision DecideSceneMode(const Scene& scene, double support_margin_rel)
     decision.enclosed_viewpoints += enclosed ? 1 : 0;
   }
   decision.interior = 2 * decision.enclosed_viewpoints > decision.observing_viewpoints;
+  const double share = decision.observing_viewpoints == 0
+                           ? 0.0
+                           : static_cast<double>(decision.enclosed_viewpoints) /
+                                 static_cast<double>(decision.observing_viewpoints);
+  decision.weak =
+      decision.observing_viewpoints > 0 && share >= options.weak_low && share <= options.weak_high;
   std::ostringstream os;
   os << "auto: " << decision.enclosed_viewpoints << " of " << decision.observing_viewpoints
      << " viewpoints enclosed by planes -> " << (decision.interior ? "interior" : "exterior");

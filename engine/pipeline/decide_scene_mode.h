@@ -4,20 +4,40 @@
 /// the box empty) and an interior scene (a room seen from inside: cells on the box full).
 ///
 /// Rule (docs/reconstruction.md): a viewpoint is enclosed when each of 14 rays from it (the 6
-/// axis directions and the 8 diagonals) hits some plane inside the bounding box of that plane's
-/// inlier segments (grown by `support_margin_rel` of the scene diagonal). The scene is interior
-/// when more than half of the observing viewpoints are enclosed. A room has walls, floor and
-/// ceiling all around its cameras; a house seen from a ring of cameras, or a street seen from
-/// street level, leaves open directions (away from the house, or the sky).
-
-#include <string>
+/// axis directions and the 8 diagonals) meets a plane at a point that the plane's inlier
+/// segments surround: in the plane, each of 8 directions from that point crosses an inlier
+/// (inliers lengthened by `gap_bridge` of their length at each end, which bridges the gaps
+/// between the pieces of one cut line). The scene is interior when more than half of the
+/// observing viewpoints are enclosed. A room has walls, floor and ceiling all around its
+/// cameras; a house seen from a ring of cameras, or a street seen from street level, leaves
+/// open directions (away from the house, or the sky).
+///
+/// Why surround and not the inliers' bounding box: a plane whose inliers are spread over a
+/// whole city (the floor bands of every building at one height) has a bounding box that covers
+/// the streets, so every street viewpoint looked enclosed by it (issue 12: 763 of 1,100).
 
 #include "engine/core/scene.h"
 
+#include <cstddef>
+#include <string>
+
 namespace linesurf::pipeline {
+
+struct SceneModeOptions {
+  /// Each inlier counts as lengthened by this fraction of its length at both ends ([0, 0.5]).
+  /// 0.15: the synthetic generator trims pieces by up to 10 % per end; real lines have gaps too.
+  double gap_bridge = 0.15;
+  /// The decision is weak (reported in warnings) when the enclosed share of the observing
+  /// viewpoints lies in [weak_low, weak_high].
+  double weak_low = 0.25;
+  double weak_high = 0.75;
+};
 
 struct SceneModeDecision {
   bool interior = false;
+  /// The enclosed share is close to one half (see SceneModeOptions): the evidence hardly
+  /// prefers one mode; the caller should warn and suggest choosing the mode explicitly.
+  bool weak = false;
   std::size_t enclosed_viewpoints = 0;
   std::size_t observing_viewpoints = 0;
   /// One sentence, e.g. "auto: 12 of 12 viewpoints enclosed by planes -> interior".
@@ -25,8 +45,9 @@ struct SceneModeDecision {
 };
 
 /// Decides from the planes, memberships and viewpoints of `scene` (scenes without planes or
-/// memberships are exterior). Deterministic; O(viewpoints x planes).
+/// memberships are exterior). Deterministic, any thread count (exact counts);
+/// O(viewpoints x planes) ray tests plus, per hit inside a plane's inlier box, O(its inliers).
 [[nodiscard]] SceneModeDecision DecideSceneMode(const Scene& scene,
-                                                double support_margin_rel = 0.02);
+                                                const SceneModeOptions& options = {});
 
 }  // namespace linesurf::pipeline

@@ -7,6 +7,7 @@
 #include "engine/core/exception.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/extract_surface.h"
+#include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
 #include "engine/pipeline/stage_timer.h"
 
@@ -37,6 +38,19 @@ Box3 SceneBox(const Scene& scene, double margin) {
     box.max[a] += grow;
   }
   return box;
+}
+
+/// Observing viewpoints whose cell is labelled full (inside the solid: against the evidence).
+void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, CellId>& cells,
+                                std::span<const std::uint8_t> labels, ResultFacts& facts) {
+  std::vector<std::uint8_t> observing(scene.viewpoints.size(), 0);
+  for (const ViewpointId v : scene.observations.items()) observing[v.index()] = 1;
+  for (std::size_t v = 0; v < observing.size(); ++v) {
+    if (observing[v] == 0) continue;
+    ++facts.observing_viewpoints;
+    const CellId c = cells[ViewpointId(v)];
+    if (c.IsValid() && labels[c.index()] != 0) ++facts.viewpoints_in_full_cells;
+  }
 }
 
 }  // namespace
@@ -105,12 +119,16 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     stage_ctx.ThrowIfCancelled(kStage);
 
     timer.Start("detect");
+    ResultFacts facts;
     if (!options.use_given_planes) {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
       PlaneDetectionResult planes = Take(DetectPlanes(scene, detect, stage_ctx));
       scene.planes = std::move(planes.planes);
       scene.memberships = std::move(planes.memberships);
+      facts.capped_blocks = static_cast<std::size_t>(planes.stats.capped_blocks);
+      facts.max_planes = detect.max_planes;
+      facts.detection_epsilon = planes.stats.epsilon;
     }
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
                       "no plane: nothing to reconstruct from");
@@ -124,12 +142,12 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     stats.planes_in_complex = built.stats.planes_used;
 
     timer.Start("evidence");
-    bool interior = options.scene_mode == SceneMode::kInterior;
-    if (options.scene_mode == SceneMode::kAuto) {
-      const SceneModeDecision decision = DecideSceneMode(scene);
-      interior = decision.interior;
-      stats.scene_mode_reason = decision.reason;
-    }
+    // Decided in every mode: a given mode that contradicts the evidence is warned about.
+    facts.decision = DecideSceneMode(scene);
+    facts.auto_mode = options.scene_mode == SceneMode::kAuto;
+    const bool interior =
+        facts.auto_mode ? facts.decision.interior : options.scene_mode == SceneMode::kInterior;
+    if (facts.auto_mode) stats.scene_mode_reason = facts.decision.reason;
     stats.scene_mode = interior ? "interior" : "exterior";
     EvidenceResult evidence =
         Take(ComputeEvidence(cx, scene, options.energy,
@@ -151,6 +169,27 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     const IndexTopology topology = CheckIndexTopology(result.mesh);
     for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
     timer.Stop();
+
+    facts.interior = interior;
+    facts.planes = scene.planes.size();
+    facts.planes_in_complex = built.stats.planes_used;
+    facts.cells = cx.NumCells();
+    facts.full_cells = static_cast<std::size_t>(
+        std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
+    CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labeling.labels, facts);
+    const EnergyOptions& e = options.energy;
+    facts.has_data_weight = e.textural_weight > 0.0 || e.structural_weight > 0.0 ||
+                            e.visibility_weight > 0.0 || e.viewpoint_prior_weight > 0.0;
+    facts.sigma = evidence.stats.sigma;
+    facts.scene_diagonal = box.Extent().norm();
+    facts.samples = evidence.stats.samples;
+    facts.grazing_samples = evidence.stats.grazing_samples;
+    facts.topology = topology;
+    facts.mesh_faces = result.mesh.NumFaces();
+    ResultJudgement judgement = JudgeResult(facts);
+    if (judgement.error) throw LinesurfException(*judgement.error);
+    result.warnings.insert(result.warnings.end(), judgement.warnings.begin(),
+                           judgement.warnings.end());
 
     // Planes back to world coordinates.
     result.planes = scene.planes;
@@ -180,8 +219,7 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     stats.objective = labeling.labels_objective;
     stats.relaxed_objective = labeling.relaxed_objective;
     stats.fractional_cells = labeling.fractional_cells;
-    stats.full_cells = static_cast<std::size_t>(
-        std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
+    stats.full_cells = facts.full_cells;
     stats.mesh_vertices = result.mesh.vertices.size();
     stats.mesh_faces = result.mesh.NumFaces();
     stats.mesh_closed = topology.closed;

@@ -1,0 +1,123 @@
+#include "engine/pipeline/decide_scene_mode.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace linesurf::pipeline {
+namespace {
+
+/// Boxes drawn by their 12 edges, each edge on the two planes of its faces; coplanar faces of
+/// different boxes share one plane (as a whole-scene detection finds them). Every viewpoint
+/// observes every edge.
+class BoxEdgesScene {
+ public:
+  void AddBox(const Vec3& lo, const Vec3& hi) {
+    const std::array<Vec3, 2> c{lo, hi};
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      const int d = (a + 2) % 3;
+      for (int i = 0; i < 2; ++i) {
+        for (int j = 0; j < 2; ++j) {
+          Vec3 p = lo;
+          p[b] = c[i][b];
+          p[d] = c[j][d];
+          Vec3 q = p;
+          q[a] = hi[a];
+          scene_.segments.push_back({p, q});
+          PlaneMembership m;
+          m.Add(PlaneOf(b, p[b]));
+          m.Add(PlaneOf(d, p[d]));
+          scene_.memberships.push_back(m);
+        }
+      }
+    }
+  }
+  Scene Seen(const std::vector<Vec3>& viewpoints) {
+    Scene s = scene_;
+    std::vector<ViewpointId> all;
+    for (const Vec3& v : viewpoints) {
+      all.push_back(s.viewpoints.NextId());
+      s.viewpoints.push_back(v);
+    }
+    for (std::size_t k = 0; k < s.NumSegments(); ++k) s.observations.AddRow(all);
+    return s;
+  }
+
+ private:
+  PlaneId PlaneOf(int axis, double offset) {
+    const auto key = std::make_tuple(axis, offset);
+    const auto it = ids_.find(key);
+    if (it != ids_.end()) return it->second;
+    Plane3 plane;
+    plane.normal = Vec3::Zero();
+    plane.normal[axis] = 1.0;
+    plane.point = Vec3::Zero();
+    plane.point[axis] = offset;
+    const PlaneId id(scene_.planes.size());
+    scene_.planes.push_back(plane);
+    ids_.emplace(key, id);
+    return id;
+  }
+
+  Scene scene_;
+  std::map<std::tuple<int, double>, PlaneId> ids_;
+};
+
+TEST(DecideSceneMode, ViewpointsInsideABoxAreEnclosed) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
+  const SceneModeDecision d =
+      DecideSceneMode(boxes.Seen({Vec3(3, 2.5, 1.5), Vec3(1, 1, 1.6), Vec3(5, 4, 0.4)}));
+  EXPECT_EQ(d.enclosed_viewpoints, 3u);
+  EXPECT_TRUE(d.interior);
+  EXPECT_FALSE(d.weak);
+}
+
+TEST(DecideSceneMode, ViewpointsAroundABoxAreNot) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
+  const SceneModeDecision d = DecideSceneMode(boxes.Seen({Vec3(-10, 2, 1.6), Vec3(3, 15, 1.6)}));
+  EXPECT_EQ(d.enclosed_viewpoints, 0u);
+  EXPECT_FALSE(d.interior);
+}
+
+// A street between two buildings whose walls, ground and roofs lie on shared planes: the
+// bounding boxes of those planes' inliers cover the street in every direction (the rule before
+// issue 12 counted such viewpoints as enclosed), but nothing surrounds the street's sky.
+TEST(DecideSceneMode, StreetBetweenBuildingsOnSharedPlanesIsNotEnclosed) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(20, 20, 12));
+  boxes.AddBox(Vec3(30, 0, 0), Vec3(50, 20, 12));
+  boxes.AddBox(Vec3(0, 30, 0), Vec3(20, 50, 12));
+  boxes.AddBox(Vec3(30, 30, 0), Vec3(50, 50, 12));
+  const SceneModeDecision d =
+      DecideSceneMode(boxes.Seen({Vec3(25, 10, 1.6), Vec3(25, 25, 1.6), Vec3(10, 25, 1.6)}));
+  EXPECT_EQ(d.enclosed_viewpoints, 0u);
+  EXPECT_FALSE(d.interior);
+}
+
+TEST(DecideSceneMode, HalfEnclosedIsWeak) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
+  const SceneModeDecision d = DecideSceneMode(boxes.Seen({Vec3(3, 2.5, 1.5), Vec3(-10, 2, 1.6)}));
+  EXPECT_EQ(d.enclosed_viewpoints, 1u);
+  EXPECT_EQ(d.observing_viewpoints, 2u);
+  EXPECT_TRUE(d.weak);
+}
+
+TEST(DecideSceneMode, NoPlanesIsExterior) {
+  Scene scene;
+  scene.segments.push_back({Vec3(0, 0, 0), Vec3(1, 0, 0)});
+  scene.viewpoints.push_back(Vec3(0, 1, 0));
+  scene.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(std::size_t{0})});
+  const SceneModeDecision d = DecideSceneMode(scene);
+  EXPECT_FALSE(d.interior);
+  EXPECT_EQ(d.observing_viewpoints, 1u);
+}
+
+}  // namespace
+}  // namespace linesurf::pipeline

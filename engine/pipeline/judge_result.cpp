@@ -1,0 +1,137 @@
+#include "engine/pipeline/judge_result.h"
+
+#include <sstream>
+
+namespace linesurf::pipeline {
+namespace {
+
+constexpr const char* kStage = "reconstruct";
+/// A closed surface needs at least this many planes (a tetrahedron).
+constexpr std::size_t kMinPlanesForSolid = 4;
+/// Beyond this multiple of the scene diagonal, sigma makes every data term negligible next to
+/// the regularisation (costs are length / sigma).
+constexpr double kNegligibleSigmaFactor = 1e3;
+/// Beyond this fraction of the scene diagonal, the detection tolerance eps swallows the scene.
+constexpr double kHugeEpsilonFraction = 0.1;
+
+std::string ModeName(bool interior) { return interior ? "interior" : "exterior"; }
+
+double Share(std::size_t part, std::size_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+void WarnSceneMode(const ResultFacts& f,
+                   const SceneModeOptions& mode_options,
+                   std::vector<std::string>& warnings) {
+  const SceneModeDecision& d = f.decision;
+  if (d.observing_viewpoints == 0) return;
+  const double share = Share(d.enclosed_viewpoints, d.observing_viewpoints);
+  std::ostringstream os;
+  if (f.auto_mode && d.weak) {
+    os << "scene mode auto chose " << ModeName(f.interior)
+       << " on weak evidence: " << d.enclosed_viewpoints << " of " << d.observing_viewpoints
+       << " observing viewpoints are enclosed by planes; choose the scene mode (exterior or "
+          "interior) explicitly";
+  } else if (!f.auto_mode && f.interior && share < mode_options.weak_low) {
+    os << "scene mode interior was requested, but only " << d.enclosed_viewpoints << " of "
+       << d.observing_viewpoints
+       << " observing viewpoints are enclosed by planes (the scene looks like an exterior)";
+  } else if (!f.auto_mode && !f.interior && share > mode_options.weak_high) {
+    os << "scene mode exterior was requested, but " << d.enclosed_viewpoints << " of "
+       << d.observing_viewpoints
+       << " observing viewpoints are enclosed by planes (the scene looks like an interior)";
+  }
+  if (!os.str().empty()) warnings.push_back(os.str());
+}
+
+/// Why the surface came out empty, most specific causes first.
+std::string EmptySurfaceCauses(const ResultFacts& f) {
+  std::vector<std::string> causes;
+  std::ostringstream os;
+  if (f.planes_in_complex < kMinPlanesForSolid) {
+    os << "only " << f.planes_in_complex << " plane(s) split the box (" << f.planes
+       << " found), a closed surface needs at least " << kMinPlanesForSolid;
+    causes.push_back(os.str());
+    os.str("");
+  }
+  if (!f.has_data_weight) {
+    causes.emplace_back(
+        "every data weight (textural, structural, visibility, viewpoint prior) is 0");
+  }
+  if (f.sigma > kNegligibleSigmaFactor * f.scene_diagonal) {
+    os << "sigma " << f.sigma << " is more than " << kNegligibleSigmaFactor
+       << " times the scene diagonal " << f.scene_diagonal
+       << ", which makes every data term negligible";
+    causes.push_back(os.str());
+    os.str("");
+  }
+  if (f.samples > 0 && 2 * f.grazing_samples > f.samples) {
+    os << f.grazing_samples << " of " << f.samples
+       << " segment samples carry no evidence because their viewpoint lies in the segment's "
+          "plane (are the viewpoints on the segments?)";
+    causes.push_back(os.str());
+    os.str("");
+  }
+  if (f.interior && 2 * f.viewpoints_in_full_cells > f.observing_viewpoints) {
+    os << f.viewpoints_in_full_cells << " of " << f.observing_viewpoints
+       << " observing viewpoints lie in cells fixed or labelled full (is it an exterior "
+          "scene?)";
+    causes.push_back(os.str());
+    os.str("");
+  }
+  if (causes.empty()) causes.emplace_back("the evidence does not separate full from empty space");
+  std::string joined;
+  for (const std::string& c : causes) joined += (joined.empty() ? "" : "; ") + c;
+  return joined;
+}
+
+}  // namespace
+
+ResultJudgement JudgeResult(const ResultFacts& f) {
+  ResultJudgement j;
+  WarnSceneMode(f, SceneModeOptions{}, j.warnings);
+  if (f.capped_blocks > 0) {
+    std::ostringstream os;
+    os << "plane detection stopped at max_planes (" << f.max_planes << ") in " << f.capped_blocks
+       << " block(s): planes may be missing; raise max_planes or detect per block (block_size)";
+    j.warnings.push_back(os.str());
+  }
+  if (f.detection_epsilon > kHugeEpsilonFraction * f.scene_diagonal) {
+    std::ostringstream os;
+    os << "plane detection tolerance eps " << f.detection_epsilon << " exceeds "
+       << kHugeEpsilonFraction << " of the scene diagonal " << f.scene_diagonal
+       << ": is the scene in other units? (use a relative epsilon)";
+    j.warnings.push_back(os.str());
+  }
+  if (f.viewpoints_in_full_cells > 0) {
+    std::ostringstream os;
+    os << f.viewpoints_in_full_cells << " of " << f.observing_viewpoints
+       << " observing viewpoints lie inside the solid (their cell is full)";
+    j.warnings.push_back(os.str());
+  }
+  std::ostringstream os;
+  if (f.mesh_faces == 0) {
+    os << "the surface is empty: all " << f.cells << " cells are "
+       << (f.interior ? "full" : "empty") << " (" << ModeName(f.interior)
+       << " scene): " << EmptySurfaceCauses(f);
+    for (const std::string& w : j.warnings) os << "; " << w;
+    j.error = Error{ErrorCode::kDegenerate, kStage, os.str()};
+    return j;
+  }
+  if (!f.topology.closed || !f.topology.manifold) {
+    os << "the surface is not " << (f.topology.closed ? "2-manifold" : "closed") << " ("
+       << f.topology.boundary_or_repeated_edges << " boundary or repeated edges, "
+       << f.topology.non_manifold_vertices << " non-manifold vertices)";
+    j.warnings.push_back(os.str());
+    return j;
+  }
+  const double volume = f.topology.signed_volume;
+  if (f.interior ? !(volume < 0.0) : !(volume > 0.0)) {
+    os << "the surface is inverted: signed volume " << volume << " for an " << ModeName(f.interior)
+       << " scene (expected " << (f.interior ? "< 0" : "> 0") << ")";
+    j.error = Error{ErrorCode::kDegenerate, kStage, os.str()};
+  }
+  return j;
+}
+
+}  // namespace linesurf::pipeline
