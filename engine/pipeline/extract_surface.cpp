@@ -1,13 +1,13 @@
 #include "engine/pipeline/extract_surface.h"
 
+#include "engine/core/exception.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <limits>
 #include <map>
 #include <utility>
-
-#include "engine/core/exception.h"
 
 namespace linesurf::pipeline {
 namespace {
@@ -20,11 +20,11 @@ constexpr double kStraightCornerSine = 1e-9;
 
 /// The surface facets with their output cycles (oriented from full to empty).
 struct SurfaceFaces {
-  std::vector<FacetId> facet;             ///< complex facet of surface face s
-  std::vector<std::uint32_t> offsets{0};  ///< corners of face s: [offsets[s], offsets[s+1])
-  std::vector<VertexId> corner_vertex;    ///< vertex of each corner
-  std::vector<EdgeId> corner_edge;        ///< edge from corner k to corner k+1 of the face
-  std::vector<std::uint32_t> partner;     ///< face across corner_edge (joined by a full run)
+  std::vector<FacetId> facet;                ///< complex facet of surface face s
+  std::vector<std::uint32_t> offsets{0};     ///< corners of face s: [offsets[s], offsets[s+1])
+  std::vector<VertexId> corner_vertex;       ///< vertex of each corner
+  std::vector<EdgeId> corner_edge;           ///< edge from corner k to corner k+1 of the face
+  std::vector<std::uint32_t> partner;        ///< face across corner_edge (joined by a full run)
   std::vector<std::uint32_t> face_of_facet;  ///< surface face of a complex facet, or kNone
 };
 
@@ -91,7 +91,9 @@ struct EdgePair {
 
 /// Around every edge, joins the two surface facets that bound each maximal run of full cells.
 /// Appends the pairs of edges with more than two surface facets to `crowded`.
-std::size_t PairFacetsAroundEdges(const CellComplex& cx, const Labeler& label, SurfaceFaces& s,
+std::size_t PairFacetsAroundEdges(const CellComplex& cx,
+                                  const Labeler& label,
+                                  SurfaceFaces& s,
                                   std::vector<EdgePair>& crowded) {
   std::size_t non_manifold = 0;
   std::vector<std::uint8_t> full;
@@ -131,7 +133,8 @@ std::size_t PairFacetsAroundEdges(const CellComplex& cx, const Labeler& label, S
 }
 
 /// Assigns an output vertex to every corner, one per umbrella of each complex vertex.
-std::vector<std::uint32_t> AssignCornerVertices(const CellComplex& cx, const SurfaceFaces& s,
+std::vector<std::uint32_t> AssignCornerVertices(const CellComplex& cx,
+                                                const SurfaceFaces& s,
                                                 std::vector<VertexId>& vertex_source) {
   const std::size_t num_corners = s.corner_vertex.size();
   std::vector<std::uint32_t> face_of_corner(num_corners);
@@ -179,9 +182,13 @@ std::vector<std::uint32_t> AssignCornerVertices(const CellComplex& cx, const Sur
 }
 
 /// Where both ends of an edge kept a single umbrella, several face pairs of that edge would
-/// share one output edge: every pair after the first gets its own vertex at the edge midpoint,
-/// inserted in both faces. Returns the vertex inserted after each corner (or kNone).
-std::vector<std::uint32_t> SeparateSharedEdges(const CellComplex& cx, const SurfaceFaces& s,
+/// share one output edge: each of those pairs gets its own vertex at the edge midpoint, inserted
+/// in both of its faces. Every pair, the first too, so that all faces along the edge have a
+/// corner there: a midpoint in some pairs only would lie on the straight edge of the others (a
+/// T-junction, which self-intersection checks rightly report). Returns the vertex inserted
+/// after each corner (or kNone).
+std::vector<std::uint32_t> SeparateSharedEdges(const CellComplex& cx,
+                                               const SurfaceFaces& s,
                                                const std::vector<EdgePair>& crowded,
                                                const std::vector<std::uint32_t>& corner_out,
                                                std::vector<VertexId>& vertex_source,
@@ -190,9 +197,16 @@ std::vector<std::uint32_t> SeparateSharedEdges(const CellComplex& cx, const Surf
   const auto next_corner = [&](std::uint32_t face, std::uint32_t k) {
     return k + 1 < s.offsets[face + 1] ? k + 1 : s.offsets[face];
   };
+  /// A pair of the current edge: its two slots and the output vertices of the edge's ends.
+  struct PairEnds {
+    std::uint32_t slot_a;
+    std::uint32_t slot_b;
+    std::pair<std::uint32_t, std::uint32_t> ends;
+  };
+  std::vector<PairEnds> pairs;
   for (std::size_t i = 0; i < crowded.size();) {
     std::size_t j = i;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> seen;
+    pairs.clear();
     for (; j < crowded.size() && crowded[j].edge == crowded[i].edge; ++j) {
       const EdgePair& p = crowded[j];
       const std::uint32_t ka = EdgeSlot(s, p.a, p.edge);
@@ -200,16 +214,18 @@ std::vector<std::uint32_t> SeparateSharedEdges(const CellComplex& cx, const Surf
       std::uint32_t x = corner_out[ka];
       std::uint32_t y = corner_out[next_corner(p.a, ka)];
       if (x > y) std::swap(x, y);
-      if (std::find(seen.begin(), seen.end(), std::make_pair(x, y)) == seen.end()) {
-        seen.emplace_back(x, y);
-        continue;
-      }
-      const auto& ev = cx.edge_vertices[p.edge];
+      pairs.push_back({ka, kb, {x, y}});
+    }
+    const auto& ev = cx.edge_vertices[crowded[i].edge];
+    const Vec3 midpoint = 0.5 * (cx.vertex_points[ev[0]] + cx.vertex_points[ev[1]]);
+    for (const PairEnds& p : pairs) {
+      const auto shares_ends = [&](const PairEnds& q) { return &q != &p && q.ends == p.ends; };
+      if (std::none_of(pairs.begin(), pairs.end(), shares_ends)) continue;
       const auto id = static_cast<std::uint32_t>(vertex_source.size());
       vertex_source.push_back(VertexId::Invalid());
-      extra_points.push_back(0.5 * (cx.vertex_points[ev[0]] + cx.vertex_points[ev[1]]));
-      inserted[ka] = id;
-      inserted[kb] = id;
+      extra_points.push_back(midpoint);
+      inserted[p.slot_a] = id;
+      inserted[p.slot_b] = id;
     }
     i = j;
   }
@@ -224,20 +240,22 @@ bool IsStraightCorner(const Vec3& prev, const Vec3& p, const Vec3& next) {
 
 }  // namespace
 
-Expected<ExtractResult> ExtractSurface(const CellComplex& cx, std::span<const std::uint8_t> labels,
+Expected<ExtractResult> ExtractSurface(const CellComplex& cx,
+                                       std::span<const std::uint8_t> labels,
                                        const ExtractOptions& options) noexcept {
   return CatchAll(kStage, [&]() -> ExtractResult {
-    LINESURF_THROW_IF(labels.size() != cx.NumCells(), kInvalidInput, kStage,
-                      "labels has " << labels.size() << " entries for " << cx.NumCells()
-                                    << " cells");
+    LINESURF_THROW_IF(
+        labels.size() != cx.NumCells(),
+        kInvalidInput,
+        kStage,
+        "labels has " << labels.size() << " entries for " << cx.NumCells() << " cells");
     const Labeler label(labels, options.outside_full);
     SurfaceFaces s = CollectSurfaceFaces(cx, label);
     ExtractResult result;
     result.stats.surface_facets = s.facet.size();
     std::vector<EdgePair> crowded;
     result.stats.non_manifold_edges = PairFacetsAroundEdges(cx, label, s, crowded);
-    const std::vector<std::uint32_t> corner_out =
-        AssignCornerVertices(cx, s, result.vertex_source);
+    const std::vector<std::uint32_t> corner_out = AssignCornerVertices(cx, s, result.vertex_source);
     const std::size_t num_umbrellas = result.vertex_source.size();
     std::vector<Vec3> midpoints;
     const std::vector<std::uint32_t> inserted =
@@ -272,7 +290,8 @@ Expected<ExtractResult> ExtractSurface(const CellComplex& cx, std::span<const st
       }
       bool straight = false;
       for (std::size_t k = 0; k < n && !straight; ++k) {
-        straight = IsStraightCorner(mesh.vertices[face[(k + n - 1) % n]], mesh.vertices[face[k]],
+        straight = IsStraightCorner(mesh.vertices[face[(k + n - 1) % n]],
+                                    mesh.vertices[face[k]],
                                     mesh.vertices[face[(k + 1) % n]]);
       }
       if (!straight) {

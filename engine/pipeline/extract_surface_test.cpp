@@ -1,15 +1,14 @@
 #include "engine/pipeline/extract_surface.h"
 
-#include <Eigen/Geometry>
+#include "engine/core/rng.h"
+#include "engine/pipeline/grid_complex_for_test.h"
+#include "engine/pipeline/mesh_index_topology.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
-
-#include "engine/core/rng.h"
-#include "engine/pipeline/grid_complex_for_test.h"
-#include "engine/pipeline/mesh_index_topology.h"
 
 namespace linesurf::pipeline {
 namespace {
@@ -23,7 +22,8 @@ std::vector<std::uint8_t> Labels(const GridComplexForTest& g,
   return labels;
 }
 
-ExtractResult Extract(const GridComplexForTest& g, const std::vector<std::uint8_t>& labels,
+ExtractResult Extract(const GridComplexForTest& g,
+                      const std::vector<std::uint8_t>& labels,
                       ExtractOptions options = {}) {
   auto result = ExtractSurface(g.complex(), labels, options);
   EXPECT_TRUE(result.has_value()) << (result ? "" : result.error().ToString());
@@ -74,20 +74,33 @@ TEST(ExtractSurface, PinchedEdgeInsideOneUmbrellaIsCut) {
 }
 
 TEST(ExtractSurface, EdgeShrinkingToOneUmbrellaAtBothEndsGetsAMidpoint) {
-  // As above, with a second bridge above the edge: both ends of the edge keep one umbrella, so one
-  // of the two face pairs along it gets its own midpoint vertex.
+  // As above, with a second bridge above the edge: both ends of the edge keep one umbrella, so
+  // each of the two face pairs along it gets its own midpoint vertex (both: a midpoint in one
+  // pair only would lie on the straight edge of the other pair's faces, a T-junction).
   const GridComplexForTest g(4, 4, 5);
-  const ExtractResult r = Extract(g, Labels(g, {{1, 1, 2},
-                                                {2, 2, 2},
-                                                {1, 1, 1},
-                                                {1, 2, 1},
-                                                {2, 2, 1},
-                                                {1, 1, 3},
-                                                {1, 2, 3},
-                                                {2, 2, 3}}));
+  const ExtractResult r = Extract(g,
+                                  Labels(g,
+                                         {{1, 1, 2},
+                                          {2, 2, 2},
+                                          {1, 1, 1},
+                                          {1, 2, 1},
+                                          {2, 2, 1},
+                                          {1, 1, 3},
+                                          {1, 2, 3},
+                                          {2, 2, 3}}));
   EXPECT_EQ(r.stats.non_manifold_edges, 1u);
-  EXPECT_EQ(r.stats.split_vertices, 1u);
-  EXPECT_FALSE(r.vertex_source.back().IsValid());
+  EXPECT_EQ(r.stats.split_vertices, 2u);
+  const std::size_t n = r.vertex_source.size();
+  ASSERT_GE(n, 2u);
+  EXPECT_FALSE(r.vertex_source[n - 1].IsValid());
+  EXPECT_FALSE(r.vertex_source[n - 2].IsValid());
+  EXPECT_EQ(r.mesh.vertices[n - 1], r.mesh.vertices[n - 2]);
+  // Each midpoint is a corner of the two faces of its pair.
+  for (const std::size_t v : {n - 2, n - 1}) {
+    std::size_t uses = 0;
+    for (const std::uint32_t i : r.mesh.face_indices) uses += i == v ? 1 : 0;
+    EXPECT_EQ(uses, 2u);
+  }
   ExpectClosedManifold(r.mesh, 8.0);
 }
 
