@@ -1,3 +1,20 @@
+# linesurf_enable_sanitizers(<list>)
+#   Instruments everything built after this call (our code and the tests; Debian's prebuilt
+#   libraries stay uninstrumented) with the given sanitizers, e.g. "address,undefined". UBSan
+#   findings abort the test (-fno-sanitize-recover) so that CTest sees them; -O1 -g keep the
+#   suite fast enough for CI and the reports readable.
+function(linesurf_enable_sanitizers sanitizers)
+  if(sanitizers STREQUAL "")
+    return()
+  endif()
+  set(flags -fsanitize=${sanitizers} -fno-omit-frame-pointer -g -O1)
+  if(sanitizers MATCHES "undefined")
+    list(APPEND flags -fno-sanitize-recover=undefined)
+  endif()
+  add_compile_options(${flags})
+  add_link_options(-fsanitize=${sanitizers})
+endfunction()
+
 # linesurf_add_module(NAME <target> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
 #   One static, position-independent library per module with the project's warnings.
 function(linesurf_add_module)
