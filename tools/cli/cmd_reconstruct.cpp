@@ -6,6 +6,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
+#include "tools/eval/mesh_topology.h"
 
 #include <cstdio>
 #include <map>
@@ -121,6 +122,14 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
       pipeline::Reconstruct(read->scene, options, ctx);
   if (!result) return ReportError(result.error());
   for (const std::string& w : result->warnings) PrintWarning(common, w);
+  // The mesh must pass the self-intersection check of `evaluate` (issue 12): never written
+  // in silence when it does not.
+  if (Expected<MeshTopology> topology = CheckMeshTopology(result->mesh);
+      topology && topology->self_intersecting) {
+    return ReportError(Error{ErrorCode::kDegenerate, "reconstruct",
+                             "the surface intersects itself (the check of linesurf evaluate): "
+                             "a defect of linesurf, please report it with the input"});
+  }
 
   io::MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
