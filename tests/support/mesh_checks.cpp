@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include "engine/core/disjoint_sets.h"
+
 namespace linesurf::testing {
 namespace {
 
@@ -30,22 +32,16 @@ struct Component {
   std::vector<Point> points;
 };
 
-std::size_t Find(std::vector<std::size_t>& parent, std::size_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
 MeshCheckReport Run(const PolygonMesh& mesh) {
   MeshCheckReport report;
   const std::size_t nv = mesh.vertices.size();
-  std::vector<std::size_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets sets(nv);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
     if (face.size() < 3) return report;
     for (std::uint32_t v : face) {
       if (v >= nv) return report;
-      parent[Find(parent, v)] = Find(parent, face[0]);
+      sets.Union(v, face[0]);
     }
   }
   // Components in order of their smallest face; vertices renumbered per component.
@@ -55,7 +51,7 @@ MeshCheckReport Run(const PolygonMesh& mesh) {
   std::vector<std::size_t> local(nv, SIZE_MAX);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
-    const std::size_t root = Find(parent, face[0]);
+    const std::size_t root = sets.Find(face[0]);
     if (component_of_root[root] == SIZE_MAX) {
       component_of_root[root] = points.size();
       points.emplace_back();

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 
 namespace linesurf {
@@ -24,29 +25,6 @@ constexpr const char* kStage = "check_mesh_topology";
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-
-/// Union-find with path halving; unions keep the smaller root so results do not depend on order.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  std::size_t Find(std::size_t x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void Union(std::size_t a, std::size_t b) {
-    a = Find(a);
-    b = Find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-  std::size_t CountRoots(std::size_t n) {
-    std::size_t roots = 0;
-    for (std::size_t i = 0; i < n; ++i) roots += Find(i) == i ? 1 : 0;
-    return roots;
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 /// Number of vertices at the bit-identical position of a vertex with a smaller index.
 std::size_t CountCoincidentVertices(const PolygonMesh& mesh) {
