@@ -1,9 +1,5 @@
 #include "engine/io/camera_centres.h"
 
-#include <Eigen/Geometry>
-
-#include <cmath>
-
 #include "engine/core/exception.h"
 #include "engine/io/file_access.h"
 #include "engine/io/text_lines.h"
@@ -12,15 +8,6 @@ namespace linesurf::io {
 namespace {
 
 constexpr const char* kStage = "read_cameras";
-
-bool ParseNumbers(const std::vector<std::string_view>& tokens, std::size_t first, std::size_t n,
-                  double* out) {
-  if (tokens.size() < first + n) return false;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!ParseDouble(tokens[first + k], out[k]) || !std::isfinite(out[k])) return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -48,44 +35,12 @@ CameraCentres ReadNvmCameraCentres(const std::filesystem::path& path) {
                            << " cameras announced)");
     // The name may contain spaces: the 10 numbers are the last tokens of the line.
     double values[10];
-    const bool ok = tokens.size() >= 11 && ParseNumbers(tokens, tokens.size() - 10, 10, values);
+    const bool ok =
+        tokens.size() >= 11 && ParseFiniteNumbers(tokens, tokens.size() - 10, 10, values);
     LINESURF_THROW_IF(!ok, kInvalidInput, kStage,
                       file << ": line " << reader.line_number() << ": camera " << c
                            << ": expected '<name> <focal> <qw qx qy qz> <cx cy cz> <radial> 0'");
     centres.emplace(c, Vec3(values[5], values[6], values[7]));
-  }
-  return centres;
-}
-
-CameraCentres ReadColmapCameraCentres(const std::filesystem::path& path) {
-  const std::filesystem::path images =
-      std::filesystem::is_directory(path) ? path / "images.txt" : path;
-  const std::string file = images.string();
-  const std::string text = ReadWholeFile(images, kStage);
-  LineReader reader(text);
-  std::vector<std::string_view> tokens;
-  CameraCentres centres;
-  bool in_header = true;
-  while (reader.Next(tokens)) {
-    if (in_header && (tokens.empty() || tokens[0].front() == '#')) continue;
-    in_header = false;
-    if (tokens.empty()) continue;  // trailing blank lines
-    const std::size_t line = reader.line_number();
-    long long image_id = 0;
-    double v[7];  // qw qx qy qz tx ty tz
-    LINESURF_THROW_IF(tokens.size() < 10 || !ParseInt(tokens[0], image_id) ||
-                          !ParseNumbers(tokens, 1, 7, v),
-                      kInvalidInput, kStage,
-                      file << ": line " << line
-                           << ": expected 'IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME'");
-    const Eigen::Quaterniond q(v[0], v[1], v[2], v[3]);
-    LINESURF_THROW_IF(!(q.norm() > 0.0), kInvalidInput, kStage,
-                      file << ": line " << line << ": zero quaternion");
-    const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
-    const Vec3 centre = -(r.transpose() * Vec3(v[4], v[5], v[6]));
-    LINESURF_THROW_IF(!centres.emplace(image_id, centre).second, kInvalidInput, kStage,
-                      file << ": line " << line << ": IMAGE_ID " << image_id << " repeated");
-    reader.Next(tokens);  // the POINTS2D line of this image (possibly empty)
   }
   return centres;
 }

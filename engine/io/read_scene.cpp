@@ -1,7 +1,11 @@
 #include "engine/io/read_scene.h"
 
+#include <algorithm>
+#include <fstream>
+
 #include "engine/core/exception.h"
 #include "engine/io/camera_centres.h"
+#include "engine/io/limap_reader.h"
 #include "engine/io/line3dpp_reader.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/obj_lines_reader.h"
@@ -12,6 +16,21 @@ namespace {
 
 constexpr const char* kStage = "read_scene";
 
+/// Formats whose observations are camera ids resolved through an NVM or COLMAP model.
+bool NeedsCameraModel(SceneFormat format) {
+  return format == SceneFormat::kLine3dpp || format == SceneFormat::kLimapTracks;
+}
+
+/// The first bytes of `path` ("" when it cannot be read: the reader then reports why).
+std::string FileStart(const std::filesystem::path& path) {
+  constexpr std::size_t kSniffBytes = 4096;
+  std::ifstream in(path, std::ios::binary);
+  std::string start(kSniffBytes, '\0');
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return start;
+}
+
 }  // namespace
 
 SceneFormat ResolveSceneFormat(const std::filesystem::path& path,
@@ -19,7 +38,10 @@ SceneFormat ResolveSceneFormat(const std::filesystem::path& path,
   if (options.format != SceneFormat::kAuto) return options.format;
   const std::string ext = LowerExtension(path);
   if (ext == ".json") return SceneFormat::kReferenceJson;
-  if (ext == ".txt") return SceneFormat::kLine3dpp;
+  if (ext == ".txt") {
+    return LooksLikeLimapTracks(FileStart(path)) ? SceneFormat::kLimapTracks
+                                                 : SceneFormat::kLine3dpp;
+  }
   if (ext == ".obj") return SceneFormat::kObjLines;
   return SceneFormat::kAuto;
 }
@@ -29,17 +51,19 @@ Status SceneReadOptions::Validate(SceneFormat resolved) const {
     return Error{ErrorCode::kInvalidOptions, kStage, message};
   };
   if (resolved == SceneFormat::kAuto) {
-    return bad("unknown input format: expected a .json (reference JSON), .txt (Line3D++) or "
-               ".obj (v/l lines) file");
+    return bad("unknown input format: expected a .json (reference JSON), .txt (Line3D++ or LIMAP "
+               "alltracks.txt) or .obj (v/l lines) file");
   }
   const bool has_nvm = !nvm.empty();
   const bool has_colmap = !colmap.empty();
-  if (resolved == SceneFormat::kLine3dpp && has_nvm == has_colmap) {
-    return bad("a Line3D++ .txt input needs its camera centres from exactly one of an NVM file "
-               "(--nvm FILE) or a COLMAP text model (--colmap DIR)");
+  if (NeedsCameraModel(resolved) && has_nvm == has_colmap) {
+    return bad(std::string("a ") +
+               (resolved == SceneFormat::kLine3dpp ? "Line3D++" : "LIMAP alltracks") +
+               " .txt input needs its camera centres from exactly one of an NVM file (--nvm "
+               "FILE) or a COLMAP model (--colmap DIR, text or binary)");
   }
-  if (resolved != SceneFormat::kLine3dpp && (has_nvm || has_colmap)) {
-    return bad("--nvm/--colmap apply to Line3D++ .txt inputs only");
+  if (!NeedsCameraModel(resolved) && (has_nvm || has_colmap)) {
+    return bad("--nvm/--colmap apply to Line3D++ and LIMAP .txt inputs only");
   }
   return {};
 }
@@ -61,8 +85,12 @@ Expected<SceneReadResult> ReadSceneWithWarnings(const std::filesystem::path& pat
     } else {
       const CameraCentres centres = options.nvm.empty() ? ReadColmapCameraCentres(options.colmap)
                                                         : ReadNvmCameraCentres(options.nvm);
-      result.scene = ReadLine3dpp(path, centres);
-      result.scene.extra_fields.emplace_back("original_L3Dpp_file", path.filename().string());
+      if (format == SceneFormat::kLimapTracks) {
+        result.scene = ReadLimapTracks(path, centres);
+      } else {
+        result.scene = ReadLine3dpp(path, centres);
+        result.scene.extra_fields.emplace_back("original_L3Dpp_file", path.filename().string());
+      }
     }
     return result;
   });

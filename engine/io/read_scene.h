@@ -11,21 +11,23 @@
 namespace linesurf::io {
 
 enum class SceneFormat {
-  kAuto,           ///< from the extension: .json, .txt (Line3D++), .obj
+  kAuto,           ///< from the extension (.json, .obj) and, for .txt, the first line
   kReferenceJson,  ///< the paper's reference JSON
   kLine3dpp,       ///< Line3D++ .txt with camera centres from an NVM file or a COLMAP model
+  kLimapTracks,    ///< LIMAP alltracks.txt with camera centres from a COLMAP model (or NVM)
   kObjLines,       ///< OBJ `v` + `l` records: segments without views (plane detection only)
 };
 
 struct SceneReadOptions {
   /// Input format; kAuto picks it from the file extension.
   SceneFormat format = SceneFormat::kAuto;
-  /// Line3D++ only: VisualSfM .nvm whose camera list the Line3D++ camera ids index (0-based).
+  /// Line3D++ and LIMAP only: VisualSfM .nvm whose camera list the camera ids index (0-based).
   std::filesystem::path nvm;
-  /// Line3D++ only: COLMAP text model directory (or its images.txt); camera ids are IMAGE_IDs.
+  /// Line3D++ and LIMAP only: COLMAP model directory, text or binary (or its images.txt /
+  /// images.bin); camera ids are IMAGE_IDs.
   std::filesystem::path colmap;
 
-  /// Line3D++ needs exactly one of `nvm` and `colmap`; other formats take neither.
+  /// Line3D++ and LIMAP need exactly one of `nvm` and `colmap`; other formats take neither.
   [[nodiscard]] Status Validate(SceneFormat resolved) const;
 };
 
@@ -35,7 +37,8 @@ struct SceneReadResult {
   std::vector<std::string> warnings;
 };
 
-/// The format `options` ask for, or the one the extension of `path` names (kAuto when unknown).
+/// The format `options` ask for, or the one the extension of `path` names (kAuto when unknown);
+/// a .txt is LIMAP tracks when its first non-blank line is a single integer, else Line3D++.
 [[nodiscard]] SceneFormat ResolveSceneFormat(const std::filesystem::path& path,
                                              const SceneReadOptions& options);
 

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -55,6 +56,17 @@ inline bool ParseDouble(std::string_view token, double& value) {
 inline bool ParseInt(std::string_view token, long long& value) {
   const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
   return result.ec == std::errc() && result.ptr == token.data() + token.size();
+}
+
+/// Parses tokens[first .. first + n) as finite doubles into out[0 .. n); false when there are
+/// too few tokens or one is not a finite number.
+inline bool ParseFiniteNumbers(const std::vector<std::string_view>& tokens, std::size_t first,
+                               std::size_t n, double* out) {
+  if (tokens.size() < first + n) return false;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!ParseDouble(tokens[first + k], out[k]) || !std::isfinite(out[k])) return false;
+  }
+  return true;
 }
 
 }  // namespace linesurf::io

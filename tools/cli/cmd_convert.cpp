@@ -36,9 +36,7 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
                     "values exactly as read");
   cmd.run = [args, &common]() -> int {
     OutputFiles files("convert");
-    files.AddInput(args->scene.input);
-    files.AddInput(args->scene.nvm);
-    files.AddInput(args->scene.colmap);
+    args->scene.AddInputsTo(files);
     files.AddOutput("-o", args->output, kJsonExtensions);
     if (Status s = files.Prepare(); !s) return ReportError(s.error());
     auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());

@@ -3,15 +3,14 @@
 #include "engine/detect/detect_planes.h"
 #include "engine/io/read_scene.h"
 #include "engine/io/reference_json.h"
+#include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/scene_input.h"
 
 #include <cstdio>
-#include <fstream>
-#include <iomanip>
-#include <limits>
 #include <optional>
 #include <string>
 
@@ -19,61 +18,13 @@ namespace linesurf::cli {
 namespace {
 
 struct DetectArgs {
-  std::string input;
+  SceneInputArgs source;
   std::string output;
   std::string vg;
   std::string report;
   std::optional<double> relative_epsilon;
   PlaneDetectionOptions options;
 };
-
-/// Writes the PolyFit / abspy vertex-group (.vg) subset: points = both endpoints of every segment
-/// (segment i -> points 2i, 2i+1), world coordinates, grey colours, normals = the first plane's
-/// normal (0 when none); one group (type 0 = plane, parameters a b c d of ax+by+cz+d = 0) per
-/// plane listing its inliers' endpoints (a structural segment's endpoints are in both groups).
-Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) return Error{ErrorCode::kInvalidInput, "write_vg", "cannot open " + path.string()};
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  const std::size_t n = scene.segments.size();
-  const Vec3& t = scene.world_from_local.translation;
-  out << "num_points: " << 2 * n << "\n";
-  for (const Segment3& s : scene.segments) {
-    for (const Vec3& p : {s.p1, s.p2}) {
-      const Vec3 w = p + t;
-      out << w.x() << " " << w.y() << " " << w.z() << "\n";
-    }
-  }
-  out << "num_colors: " << 2 * n << "\n";
-  for (std::size_t i = 0; i < 2 * n; ++i) out << "0.5 0.5 0.5\n";
-  out << "num_normals: " << 2 * n << "\n";
-  for (std::size_t i = 0; i < n; ++i) {
-    const PlaneMembership& m = scene.memberships[SegmentId(i)];
-    const Vec3 normal = m.count > 0 ? scene.planes[m.planes[0]].normal : Vec3::Zero();
-    for (int k = 0; k < 2; ++k) out << normal.x() << " " << normal.y() << " " << normal.z() << "\n";
-  }
-  std::vector<std::vector<std::size_t>> groups(scene.planes.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    const PlaneMembership& m = scene.memberships[SegmentId(i)];
-    for (std::uint8_t k = 0; k < m.count; ++k) groups[m.planes[k].index()].push_back(i);
-  }
-  out << "num_groups: " << groups.size() << "\n";
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    const Plane3& plane = scene.planes[PlaneId(g)];
-    const double d = -plane.normal.dot(plane.point + t);
-    out << "group_type: 0\nnum_group_parameters: 4\ngroup_parameters: " << plane.normal.x() << " "
-        << plane.normal.y() << " " << plane.normal.z() << " " << d << "\n";
-    out << "group_label: plane_" << g << "\ngroup_color: 0.5 0.5 0.5\n";
-    out << "group_num_point: " << 2 * groups[g].size() << "\n";
-    for (std::size_t k = 0; k < groups[g].size(); ++k) {
-      out << (k ? " " : "") << 2 * groups[g][k] << " " << 2 * groups[g][k] + 1;
-    }
-    out << "\nnum_children: 0\n";
-  }
-  out.close();
-  if (!out) return Error{ErrorCode::kInvalidInput, "write_vg", "cannot write " + path.string()};
-  return {};
-}
 
 /// Above this many segments, a whole-scene detection gets a hint about per-block detection.
 constexpr std::size_t kLargeSceneSegments = 50000;
@@ -84,7 +35,7 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
                                 const PlaneDetectionResult& r, std::size_t segments) {
   const PlaneDetectionStats& st = r.stats;
   nlohmann::json j;
-  j["input"] = args.input;
+  j["input"] = args.source.input;
   j["output"] = args.output;
   j["options"] = DetectionOptionsJson(args.options);
   j["options"]["threads"] = common.threads;
@@ -114,12 +65,13 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
 
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
   OutputFiles files("detect");
-  files.AddInput(args.input);
+  args.source.AddInputsTo(files);
   files.AddOutput("-o", args.output, kJsonExtensions);
   files.AddOutput("--vg", args.vg, {".vg"});
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
+  Expected<io::SceneReadResult> read =
+      io::ReadSceneWithWarnings(args.source.input, args.source.ReadOptions());
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
   Scene scene = std::move(read->scene);
@@ -159,9 +111,8 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
     return ReportError(s.error());
   }
   if (!args.vg.empty()) {
-    if (Status s =
-            files.Write(args.vg, [&](const auto& path) { return WriteVertexGroups(scene, path); });
-        !s) {
+    auto write_vg = [&](const auto& path) { return io::WriteVertexGroups(scene, path); };
+    if (Status s = files.Write(args.vg, write_vg); !s) {
       return ReportError(s.error());
     }
   }
@@ -197,8 +148,7 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   Command cmd;
   cmd.app = app.add_subcommand("detect", "Detect planes in 3D line segments (RANSAC)");
   CLI::App* sub = cmd.app;
-  sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++, .obj)")
-      ->required();
+  AddSceneInputOptions(*sub, args->source);
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
   AddDetectionOptions(*sub, args->options, args->relative_epsilon);

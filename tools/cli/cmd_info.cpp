@@ -179,9 +179,7 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
   cmd.app->add_flag("--json", args->json, "Print the description as JSON on stdout");
   cmd.run = [args]() -> int {
     OutputFiles files("info");
-    files.AddInput(args->scene.input);
-    files.AddInput(args->scene.nvm);
-    files.AddInput(args->scene.colmap);
+    args->scene.AddInputsTo(files);
     if (Status s = files.Prepare(); !s) return ReportError(s.error());
     auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
     if (!read) return ReportError(read.error());

@@ -1,11 +1,14 @@
-// `linesurf reconstruct INPUT -o MESH.{ply,obj,off}`: the whole method (docs/reconstruction.md).
+// `linesurf reconstruct INPUT -o MESH.{ply,obj,off,city.json}`: the whole method
+// (docs/reconstruction.md).
 
+#include "engine/io/cityjson_write.h"
 #include "engine/io/mesh_io.h"
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/reconstruct.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/scene_input.h"
 #include "tools/eval/mesh_topology.h"
 
 #include <cstdio>
@@ -19,7 +22,7 @@ namespace linesurf::cli {
 namespace {
 
 struct ReconstructArgs {
-  std::string input;
+  SceneInputArgs source;
   std::string output;
   std::string report;
   std::string planes = "detect";
@@ -27,6 +30,7 @@ struct ReconstructArgs {
   std::optional<double> relative_epsilon;
   std::optional<double> sigma;
   bool ascii = false;
+  bool cityjson = false;
   pipeline::ReconstructOptions options;
 };
 
@@ -34,7 +38,7 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
   const pipeline::RunStats& s = r.stats;
   const pipeline::EnergyOptions& e = args.options.energy;
   nlohmann::json j;
-  j["input"] = args.input;
+  j["input"] = args.source.input;
   j["output"] = args.output;
   j["options"] = {{"planes", args.planes},
                   {"scene", args.scene},
@@ -97,11 +101,13 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   OutputFiles files("reconstruct");
-  files.AddInput(args.input);
-  files.AddOutput("-o", args.output, kMeshExtensions);
+  args.source.AddInputsTo(files);
+  const bool cityjson = args.cityjson || io::IsCityJsonPath(args.output);
+  files.AddOutput("-o", args.output, cityjson ? std::vector<std::string>{} : kMeshExtensions);
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.input, {});
+  Expected<io::SceneReadResult> read =
+      io::ReadSceneWithWarnings(args.source.input, args.source.ReadOptions());
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
 
@@ -133,11 +139,12 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
 
   io::MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
-  if (Status s = files.Write(
-          args.output, [&](const auto& path) { return io::WriteMesh(result->mesh, path, write); });
-      !s) {
-    return ReportError(s.error());
-  }
+  // The format follows the destination's name: the staged file keeps only its last extension.
+  auto write_surface = [&](const std::filesystem::path& path) {
+    return cityjson ? io::WriteCityJson(result->mesh, result->planes.raw(), path)
+                    : io::WriteMesh(result->mesh, path, write);
+  };
+  if (Status s = files.Write(args.output, write_surface); !s) return ReportError(s.error());
   if (!args.report.empty()) {
     const nlohmann::json report = ReportJson(args, *result);
     if (Status s =
@@ -171,7 +178,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   cmd.app = app.add_subcommand(
       "reconstruct", "Reconstruct a closed piecewise-planar mesh from 3D line segments");
   CLI::App* sub = cmd.app;
-  sub->add_option("input", args->input, "Input scene (.json reference, .txt Line3D++)")->required();
+  AddSceneInputOptions(*sub, args->source);
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
   sub->add_option("--planes", args->planes, "Planes: detect them, or use the input's (given)")
       ->capture_default_str()
@@ -205,6 +212,8 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   sub->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   sub->add_option("--report", args->report, "Write the run report (JSON) here");
   sub->add_flag("--ascii", args->ascii, "ASCII PLY");
+  sub->add_flag("--cityjson", args->cityjson,
+                "Write CityJSON whatever the output extension (one Building per connected part)");
   sub->add_flag("--triangulate", o.triangulate, "Triangles instead of convex polygons");
   AddDetectionOptions(*sub, o.planes, args->relative_epsilon);
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };

@@ -1,9 +1,10 @@
 // `linesurf render`: PNG pictures of segments (coloured by plane membership) and/or a mesh.
 
 #include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
+#include "engine/io/read_scene.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/scene_input.h"
 #include "tools/render/render_image.h"
 #include "tools/render/write_png.h"
 
@@ -17,7 +18,7 @@ namespace linesurf::cli {
 namespace {
 
 struct RenderArgs {
-  std::string lines_path;
+  SceneInputArgs lines;
   std::string mesh_path;
   std::string output_path;
   std::string size = "800x600";
@@ -27,7 +28,7 @@ struct RenderArgs {
 
 int Run(const RenderArgs& args_in) {
   RenderArgs args = args_in;
-  if (args.lines_path.empty() && args.mesh_path.empty()) {
+  if (args.lines.input.empty() && args.mesh_path.empty()) {
     return ReportError(Error{ErrorCode::kInvalidOptions, "render", "give --lines, --mesh or both"});
   }
   int width = 0;
@@ -45,13 +46,13 @@ int Run(const RenderArgs& args_in) {
   }
   if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
   OutputFiles files("render");
-  files.AddInput(args.lines_path);
+  args.lines.AddInputsTo(files);
   files.AddInput(args.mesh_path);
   files.AddOutput("-o", args.output_path, {".png"});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
   std::optional<Scene> scene;
-  if (!args.lines_path.empty()) {
-    auto read = io::ReadReferenceJson(args.lines_path);
+  if (!args.lines.input.empty()) {
+    auto read = io::ReadScene(args.lines.input, args.lines.ReadOptions());
     if (!read) return ReportError(read.error());
     scene = std::move(*read);
   }
@@ -81,7 +82,8 @@ Command AddRenderCommand(CLI::App& app, CommonOptions& /*common*/) {
       "render",
       "Write a PNG of segments (grey: no plane, blue: textural, red: structural) and/or a mesh "
       "(flat-shaded, outlined facets); side by side when both are given");
-  cmd.app->add_option("--lines", args->lines_path, "Segments as reference JSON");
+  cmd.app->add_option("--lines", args->lines.input, kSceneFileHelp);
+  AddCameraModelOptions(*cmd.app, args->lines);
   cmd.app->add_option("--mesh", args->mesh_path, "Mesh (.ply, .obj, .off)");
   cmd.app->add_option("-o,--output", args->output_path, "Output PNG")->required();
   cmd.app->add_option("--view", args->options.view, "iso, iso-back, front, back, left, right or top")
