@@ -170,9 +170,10 @@ TEST_F(CliInputs, BadAndMissingCameraIdsExitWithThreeNamingTheLine) {
   };
   for (const Case& c : cases) {
     WriteFixture(dir_ / c.file, c.text);
-    for (const std::string command : {"reconstruct", "detect"}) {
+    for (const auto& [command, output] :
+         {std::pair<std::string, std::string>{"reconstruct", ".ply"}, {"detect", ".json"}}) {
       const CliRunResult r = Run(command + " " + Quote(dir_ / c.file) + c.options + " -o " +
-                                 Quote(dir_ / (c.file + ".out.json")));
+                                 Quote(dir_ / (c.file + output)));
       EXPECT_EQ(r.exit_code, 3) << command << " " << c.file << ": " << r.err;
       EXPECT_NE(r.err.find(c.expected), std::string::npos) << command << ": " << r.err;
     }
