@@ -6,14 +6,38 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 
 namespace linesurf::partition {
 namespace {
 
 constexpr char kStage[] = "seam_overlay";
 /// Padding of the rounded polygon boxes, relative to the face's size, before exact clipping:
-/// far above the rounding of vertex coordinates (about 1e-15 relative).
+/// far above the error of rounded vertices (their certified boxes are at most 1e-10 relative
+/// wide, exact_predicates.cpp).
 constexpr double kBoxPadding = 1e-9;
+/// Same margin for the double separation test, relative to the magnitude of the evaluation.
+constexpr double kSeparationMargin = 1e-8;
+
+/// true when some edge line of `b` has every rounded vertex of `a` outside it by more than the
+/// rounding error could explain: the polygons are then certainly disjoint (a double filter that
+/// spares the exact clipping of most pairs whose boxes overlap).
+bool Separated(const BlockComplexes& cx, const SeamPolygon& a, const SeamPolygon& b) {
+  for (std::size_t e = 0; e < b.edge_planes.size(); ++e) {
+    const Eigen::Vector4d c = b.edge_sides[e] * cx.Coefficients(b.edge_planes[e]);
+    bool all_outside = true;
+    for (const Vec3& p : a.points) {
+      const double value = c.head<3>().dot(p) + c[3];
+      const double magnitude = c.head<3>().cwiseAbs().dot(p.cwiseAbs()) + std::abs(c[3]);
+      if (!(value < -kSeparationMargin * magnitude)) {
+        all_outside = false;
+        break;
+      }
+    }
+    if (all_outside) return true;
+  }
+  return false;
+}
 
 VertexKey Sorted(PlaneKey a, PlaneKey b, PlaneKey c) {
   VertexKey k{a, b, c};
@@ -102,6 +126,7 @@ std::vector<SeamPolygon> FacePolygons(const BlockComplex& block, int local_face)
       poly.vertices.push_back(Sorted(block.plane_keys[t[0].index()],
                                      block.plane_keys[t[1].index()],
                                      block.plane_keys[t[2].index()]));
+      poly.points.push_back(c.vertex_points[vertices[i]]);
       poly.lo = poly.lo.cwiseMin(c.vertex_points[vertices[i]]);
       poly.hi = poly.hi.cwiseMax(c.vertex_points[vertices[i]]);
       // The other facet of the cell on this edge carries the edge's line.
@@ -144,6 +169,7 @@ std::vector<SeamFacet> OverlayFace(const BlockComplexes& cx,
           ((b.lo.array() - pad) > a.hi.array()).any()) {
         continue;
       }
+      if (Separated(cx, a, b) || Separated(cx, b, a)) continue;
       Ring ring{a.vertices, a.edge_planes};
       for (std::size_t e = 0; e < b.edge_planes.size() && !ring.vertices.empty(); ++e) {
         ring = Clip(cx, face, ring, b.edge_planes[e], b.edge_sides[e]);

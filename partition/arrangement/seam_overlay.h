@@ -18,7 +18,8 @@ struct SeamPolygon {
   std::vector<VertexKey> vertices;
   std::vector<PlaneKey> edge_planes;
   std::vector<int> edge_sides;
-  Vec3 lo = Vec3::Zero();  ///< box of the rounded vertices
+  std::vector<Vec3> points;  ///< rounded vertices
+  Vec3 lo = Vec3::Zero();    ///< box of the rounded vertices
   Vec3 hi = Vec3::Zero();
 };
 

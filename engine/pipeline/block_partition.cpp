@@ -1,0 +1,84 @@
+#include "engine/pipeline/block_partition.h"
+
+#include "engine/core/exception.h"
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace linesurf::pipeline {
+namespace {
+
+constexpr char kStage[] = "block_partition";
+
+template <typename T>
+T Take(Expected<T>&& e) {
+  if (!e) throw LinesurfException(e.error());
+  return std::move(e.value());
+}
+
+/// Inlier segments of every plane, from the memberships (ascending).
+std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
+  std::vector<std::vector<SegmentId>> inliers(scene.planes.size());
+  for (std::size_t s = 0; s < scene.memberships.size(); ++s) {
+    const PlaneMembership& m = scene.memberships[SegmentId(s)];
+    for (std::uint8_t k = 0; k < m.count; ++k) {
+      LINESURF_THROW_IF(m.planes[k].index() >= scene.planes.size(),
+                        kInvalidInput,
+                        kStage,
+                        "segment " << s << " names plane " << m.planes[k].index() << " of "
+                                   << scene.planes.size());
+      inliers[m.planes[k].index()].emplace_back(s);
+    }
+  }
+  return inliers;
+}
+
+}  // namespace
+
+Status BlockPartitionOptions::Validate() const {
+  if (!(block_size >= 0.0) || !std::isfinite(block_size)) {
+    return Error{ErrorCode::kInvalidOptions, kStage, "block_size must be >= 0 (0 = automatic)"};
+  }
+  if (Status s = size_rule.Validate(); !s) return s;
+  if (Status s = support.Validate(); !s) return s;
+  return complex.Validate();
+}
+
+Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
+                                             const Box3& box,
+                                             const BlockPartitionOptions& options,
+                                             const RunContext& ctx) noexcept {
+  if (Status ok = options.Validate(); !ok) return ok.error();
+  return CatchAll(kStage, [&]() -> BlockPartition {
+    LINESURF_THROW_IF(!scene.planes.empty() && !scene.HasMemberships(),
+                      kInvalidInput,
+                      kStage,
+                      "the block partition needs the planes' inliers (segment memberships)");
+    BlockPartition out;
+    BlockPartitionStats& stats = out.stats;
+    stats.automatic_size = options.block_size == 0.0;
+    stats.block_size = options.block_size;
+    if (stats.automatic_size) {
+      stats.size_choice =
+          Take(partition::ChooseBlockSize(scene.segments.raw(), box, options.size_rule));
+      stats.block_size = stats.size_choice.block_size;
+    }
+    const partition::BlockGrid grid = Take(partition::BlockGrid::Create(box, stats.block_size));
+    stats.dims = grid.dims();
+
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
+    for (const auto& list : inliers) stats.planes_without_inliers += list.empty() ? 1 : 0;
+    out.regions = Take(
+        partition::ComputePlaneSupport(grid, scene.segments.raw(), inliers, options.support, ctx));
+    stats.seconds_support =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    out.complexes = Take(partition::BuildBlockComplexes(
+        grid, scene.planes.raw(), out.regions, options.complex, ctx));
+    return out;
+  });
+}
+
+}  // namespace linesurf::pipeline

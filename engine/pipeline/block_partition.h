@@ -1,0 +1,56 @@
+#pragma once
+/// @file block_partition.h
+/// @brief The partition of the block engine (docs/design/block_engine.md, sections 1-3) for a
+/// scene with planes: the block grid of the scene box (block size given or automatic), each
+/// plane's support region from its inliers (the scene's memberships), and the per-block exact
+/// complexes with their seam overlay.
+
+#include "linesurf/error.h"
+
+#include "engine/core/geometry.h"
+#include "engine/core/run_context.h"
+#include "engine/core/scene.h"
+#include "partition/arrangement/block_complexes.h"
+#include "partition/arrangement/build_cell_complex.h"
+#include "partition/voxel/block_size_rule.h"
+#include "partition/voxel/plane_support.h"
+
+#include <Eigen/Core>
+
+namespace linesurf::pipeline {
+
+struct BlockPartitionOptions {
+  /// Side of the base blocks (scene units, >= 0); 0 = automatic (`size_rule`).
+  double block_size = 0.0;
+  partition::BlockSizeRule size_rule;
+  partition::PlaneSupportOptions support;
+  partition::CellComplexOptions complex;
+
+  /// Names the first out-of-range field.
+  [[nodiscard]] Status Validate() const;
+};
+
+struct BlockPartitionStats {
+  double block_size = 0.0;
+  bool automatic_size = false;
+  partition::BlockSizeChoice size_choice;  ///< when automatic
+  Eigen::Vector3i dims{0, 0, 0};
+  std::size_t planes_without_inliers = 0;  ///< planes no membership names: they split nothing
+  double seconds_support = 0.0;
+};
+
+struct BlockPartition {
+  partition::PlaneSupportRegions regions;
+  partition::BlockComplexes complexes;
+  BlockPartitionStats stats;
+};
+
+/// The block partition of `box` (the scene box, local frame) for the scene's planes, with the
+/// memberships as inliers. Errors: kInvalidOptions, kInvalidInput (no memberships for the
+/// planes), and those of the partition stages.
+[[nodiscard]] Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
+                                                           const Box3& box,
+                                                           const BlockPartitionOptions& options,
+                                                           const RunContext& ctx) noexcept;
+
+}  // namespace linesurf::pipeline
