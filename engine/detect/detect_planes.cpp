@@ -547,6 +547,14 @@ double SceneDiagonal(const Scene& scene) {
 }  // namespace
 }  // namespace detect
 
+std::string PlaneCapWarning(const PlaneDetectionStats& stats, std::int32_t max_planes) {
+  if (stats.capped_blocks == 0) return "";
+  std::ostringstream os;
+  os << "plane detection stopped at max_planes (" << max_planes << ") in " << stats.capped_blocks
+     << " block(s): planes may be missing; raise max_planes or detect per block (block_size)";
+  return os.str();
+}
+
 Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                                             const PlaneDetectionOptions& options,
                                             const RunContext& ctx) noexcept {

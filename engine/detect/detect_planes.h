@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/core/geometry.h"
@@ -142,6 +143,10 @@ struct PlaneDetectionResult {
   IdVector<SegmentId, PlaneMembership> memberships;
   PlaneDetectionStats stats;
 };
+
+/// The warning for a detection that stopped at max_planes in `stats.capped_blocks` blocks ("" when
+/// none did): planes may be missing.
+[[nodiscard]] std::string PlaneCapWarning(const PlaneDetectionStats& stats, std::int32_t max_planes);
 
 /// Detects planes in `scene.segments` (given planes and memberships are ignored).
 /// Deterministic: the result depends on the input, options and seed, not on the thread count

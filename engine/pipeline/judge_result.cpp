@@ -90,12 +90,7 @@ std::string EmptySurfaceCauses(const ResultFacts& f) {
 ResultJudgement JudgeResult(const ResultFacts& f) {
   ResultJudgement j;
   WarnSceneMode(f, SceneModeOptions{}, j.warnings);
-  if (f.capped_blocks > 0) {
-    std::ostringstream os;
-    os << "plane detection stopped at max_planes (" << f.max_planes << ") in " << f.capped_blocks
-       << " block(s): planes may be missing; raise max_planes or detect per block (block_size)";
-    j.warnings.push_back(os.str());
-  }
+  if (!f.plane_cap_warning.empty()) j.warnings.push_back(f.plane_cap_warning);
   if (f.detection_epsilon > kHugeEpsilonFraction * f.scene_diagonal) {
     std::ostringstream os;
     os << "plane detection tolerance eps " << f.detection_epsilon << " exceeds "

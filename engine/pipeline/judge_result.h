@@ -24,8 +24,7 @@ struct ResultFacts {
   SceneModeDecision decision;
   std::size_t planes = 0;
   std::size_t planes_in_complex = 0;
-  std::size_t capped_blocks = 0;  ///< detection blocks stopped at max_planes
-  std::int32_t max_planes = 0;
+  std::string plane_cap_warning;   ///< PlaneCapWarning of the detection ("" if not capped)
   double detection_epsilon = 0.0;  ///< eps used by plane detection (0: given planes)
   std::size_t cells = 0;
   std::size_t full_cells = 0;

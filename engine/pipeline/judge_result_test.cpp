@@ -1,5 +1,7 @@
 #include "engine/pipeline/judge_result.h"
 
+#include "engine/detect/detect_planes.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -17,7 +19,6 @@ ResultFacts GoodExterior() {
   f.decision.observing_viewpoints = 28;
   f.planes = 10;
   f.planes_in_complex = 10;
-  f.max_planes = 160;
   f.cells = 90;
   f.full_cells = 12;
   f.observing_viewpoints = 28;
@@ -94,7 +95,9 @@ TEST(JudgeResult, InvertedSurfaceIsAnError) {
 
 TEST(JudgeResult, CapWeakDecisionAndViewpointsInsideAreWarned) {
   ResultFacts f = GoodExterior();
-  f.capped_blocks = 1;
+  PlaneDetectionStats detection;
+  detection.capped_blocks = 1;
+  f.plane_cap_warning = PlaneCapWarning(detection, 160);
   f.decision.enclosed_viewpoints = 13;
   f.decision.weak = true;
   f.viewpoints_in_full_cells = 2;

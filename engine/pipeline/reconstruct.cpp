@@ -126,8 +126,8 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
       PlaneDetectionResult planes = Take(DetectPlanes(scene, detect, stage_ctx));
       scene.planes = std::move(planes.planes);
       scene.memberships = std::move(planes.memberships);
-      facts.capped_blocks = static_cast<std::size_t>(planes.stats.capped_blocks);
-      facts.max_planes = detect.max_planes;
+      facts.plane_cap_warning = PlaneCapWarning(planes.stats, detect.max_planes);
+      stats.capped_blocks = static_cast<std::size_t>(planes.stats.capped_blocks);
       facts.detection_epsilon = planes.stats.epsilon;
     }
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,

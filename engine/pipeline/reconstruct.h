@@ -69,6 +69,7 @@ struct RunStats {
   std::size_t viewpoints = 0;
   std::size_t observations = 0;
   std::size_t planes = 0;
+  std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes
   std::size_t segments_with_planes[3] = {0, 0, 0};  ///< on 0, 1, 2 planes
   std::size_t planes_in_complex = 0;                ///< planes that split the box
   std::size_t cells = 0;

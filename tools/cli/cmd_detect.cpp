@@ -47,6 +47,7 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
                 {"planes", st.planes_after_fusion},
                 {"merges", st.merges},
                 {"memberships_dropped", st.memberships_dropped},
+                {"capped_blocks", st.capped_blocks},
                 {"segments_with_0_planes", st.num_l0},
                 {"segments_with_1_plane", st.num_l1},
                 {"segments_with_2_planes", st.num_l2},
@@ -94,6 +95,9 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.options, ctx);
   if (!detected) return ReportError(detected.error());
   const PlaneDetectionStats& st = detected->stats;
+  if (const std::string cap = PlaneCapWarning(st, args.options.max_planes); !cap.empty()) {
+    PrintWarning(common, cap);
+  }
   if (!args.report.empty()) {
     const nlohmann::json report = DetectReportJson(common, args, *detected, scene.segments.size());
     if (Status s = files.Write(

@@ -67,6 +67,7 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
                  {"viewpoints", s.viewpoints},
                  {"observations", s.observations},
                  {"planes", s.planes},
+                 {"capped_blocks", s.capped_blocks},
                  {"segments_with_0_planes", s.segments_with_planes[0]},
                  {"segments_with_1_plane", s.segments_with_planes[1]},
                  {"segments_with_2_planes", s.segments_with_planes[2]},
