@@ -2,6 +2,7 @@
 
 #include "engine/core/exception.h"
 #include "engine/io/camera_centres.h"
+#include "engine/io/limap_reader.h"
 #include "engine/io/line3dpp_reader.h"
 #include "engine/io/mesh_io.h"
 #include "engine/io/obj_lines_reader.h"
@@ -90,9 +91,15 @@ int ReferenceJson(const std::uint8_t* data, std::size_t size) {
   return Check(io::ReadReferenceJsonWithWarnings(WriteInput(data, size, "lines.json")));
 }
 
-int Line3dpp(const std::uint8_t* data, std::size_t size) {
+/// Camera ids 0..7 for the track readers (other ids in the input are errors to report).
+io::CameraCentres SomeCentres() {
   io::CameraCentres centres;
   for (std::int64_t id = 0; id < 8; ++id) centres[id] = Vec3(static_cast<double>(id), 0.0, 1.0);
+  return centres;
+}
+
+int Line3dpp(const std::uint8_t* data, std::size_t size) {
+  const io::CameraCentres centres = SomeCentres();
   const std::filesystem::path path = WriteInput(data, size, "lines.txt");
   return CheckThrowing([&] { (void)io::ReadLine3dpp(path, centres); });
 }
@@ -105,6 +112,17 @@ int Nvm(const std::uint8_t* data, std::size_t size) {
 int Colmap(const std::uint8_t* data, std::size_t size) {
   const std::filesystem::path path = WriteInput(data, size, "images.txt");
   return CheckThrowing([&] { (void)io::ReadColmapCameraCentres(path); });
+}
+
+int ColmapBinary(const std::uint8_t* data, std::size_t size) {
+  const std::filesystem::path path = WriteInput(data, size, "images.bin");
+  return CheckThrowing([&] { (void)io::ReadColmapCameraCentres(path); });
+}
+
+int Limap(const std::uint8_t* data, std::size_t size) {
+  const io::CameraCentres centres = SomeCentres();
+  const std::filesystem::path path = WriteInput(data, size, "alltracks.txt");
+  return CheckThrowing([&] { (void)io::ReadLimapTracks(path, centres); });
 }
 
 int ObjLines(const std::uint8_t* data, std::size_t size) {
@@ -124,11 +142,13 @@ int MeshOff(const std::uint8_t* data, std::size_t size) {
   return Check(io::ReadMesh(WriteInput(data, size, "mesh.off")));
 }
 
-constexpr std::array<FuzzTarget, 8> kTargets{{
+constexpr std::array<FuzzTarget, 10> kTargets{{
     {"reference_json", &ReferenceJson},
     {"line3dpp", &Line3dpp},
     {"nvm", &Nvm},
     {"colmap", &Colmap},
+    {"colmap_binary", &ColmapBinary},
+    {"limap", &Limap},
     {"obj_lines", &ObjLines},
     {"mesh_ply", &MeshPly},
     {"mesh_obj", &MeshObj},
