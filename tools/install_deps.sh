@@ -9,7 +9,7 @@ $SUDO apt-get update
 $SUDO apt-get install -y --no-install-recommends \
   build-essential cmake pkg-config git \
   libcgal-dev libeigen3-dev libtbb-dev libopenvdb-dev libboost-iostreams-dev \
-  libsuitesparse-dev coinor-libclp-dev nlohmann-json3-dev libcli11-dev \
+  libsuitesparse-dev coinor-libclp-dev coinor-libcbc-dev nlohmann-json3-dev libcli11-dev \
   libgmp-dev libmpfr-dev libgtest-dev libbenchmark-dev \
   libpng-dev libmaxflow-dev \
   clang-14 libfuzzer-14-dev libclang-rt-14-dev

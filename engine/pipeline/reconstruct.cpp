@@ -218,6 +218,10 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     stats.solver_status = labeling.status;
     stats.objective = labeling.labels_objective;
     stats.relaxed_objective = labeling.relaxed_objective;
+    stats.rounded_objective = labeling.rounded_objective;
+    stats.lower_bound = labeling.lower_bound;
+    stats.lower_bound_source = labeling.lower_bound_source;
+    stats.labeling_method = labeling.method;
     stats.fractional_cells = labeling.fractional_cells;
     stats.full_cells = facts.full_cells;
     stats.mesh_vertices = result.mesh.vertices.size();

@@ -88,8 +88,14 @@ struct RunStats {
   std::size_t lp_nonzeros = 0;
   std::string solver_backend;
   std::string solver_status;
-  double objective = 0.0;          ///< energy of the rounded labels
-  double relaxed_objective = 0.0;  ///< LP optimum (lower bound for exact backends)
+  double objective = 0.0;          ///< energy of the labels (after rounding and improvement)
+  double relaxed_objective = 0.0;  ///< energy of the relaxed solution (LP optimum for clp)
+  double rounded_objective = 0.0;  ///< energy of the labels right after rounding
+  /// Best proven lower bound on the integral optimum (-inf: none) and what proves it
+  /// (solver::LabelingResult::lower_bound_source).
+  double lower_bound = 0.0;
+  std::string lower_bound_source;
+  std::string labeling_method;  ///< solver::LabelingResult::method
   std::size_t fractional_cells = 0;
   std::size_t full_cells = 0;
   std::size_t mesh_vertices = 0;

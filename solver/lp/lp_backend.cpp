@@ -7,10 +7,14 @@
 #include "engine/core/exception.h"
 #include "solver/energy/build_lp.h"
 #include "solver/lp/band_fixing.h"
+#include "solver/lp/dual_bound.h"
+#include "solver/lp/group_moves.h"
+#include "solver/lp/backends/cbc/cbc_backend.h"
 #include "solver/lp/backends/clp/clp_backend.h"
 #include "solver/lp/backends/maxflow/maxflow_backend.h"
 #include "solver/lp/backends/pdhg/pdhg_backend.h"
 #include "solver/lp/round_labels.h"
+#include "solver/lp/window_polish.h"
 
 namespace linesurf::solver {
 namespace {
@@ -32,6 +36,70 @@ std::string ResolveBackend(const std::string& requested, const ReducedEnergy& re
 LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
                      const RunContext& ctx);
 
+// Structural and parity energy of 0/1 labels (the terms max-flow leaves out).
+double HigherOrderEnergy(const EnergyInput& energy, const std::vector<std::uint8_t>& labels) {
+  EnergyInput higher;
+  higher.ResizeCells(energy.NumCells());
+  higher.structural_offsets = energy.structural_offsets;
+  higher.structural_cells = energy.structural_cells;
+  higher.structural_weights = energy.structural_weights;
+  higher.parity_offsets = energy.parity_offsets;
+  higher.parity_cells = energy.parity_cells;
+  higher.parity_signs = energy.parity_signs;
+  higher.parity_weights = energy.parity_weights;
+  return higher.Evaluate(std::span<const std::uint8_t>(labels));
+}
+
+// What the backend proves about the integral optimum.
+void SetLowerBound(LabelingResult& result, const LpModel& lp, const LpSolution& solution) {
+  if (result.backend == "clp" || result.backend == "clp-barrier") {
+    result.lower_bound = result.relaxed_objective;
+    result.lower_bound_source = "lp optimum";
+  } else if (result.backend == "maxflow") {
+    result.lower_bound = result.labels_objective;
+    result.lower_bound_source = "integer optimum";
+  } else if (result.backend == "pdhg" && !solution.row_duals.empty()) {
+    // pdhg's relaxed objective is a primal value; its dual point proves a bound.
+    result.lower_bound = std::min(LagrangianBound(lp, solution.row_duals), result.labels_objective);
+    result.lower_bound_source = "lp dual bound";
+  } else if (result.backend == "cbc") {
+    result.lower_bound = std::min(solution.lower_bound, result.labels_objective);
+    result.lower_bound_source = result.status == "optimal" ? "integer optimum" : "branch and bound";
+  }
+}
+
+// After rounding: local search, group moves and exact windows (each optional), the energy of
+// the labels and the method. Returns true when one exact window held every free cell.
+bool Improve(const EnergyInput& energy, const LabelingOptions& options, const RunContext& ctx,
+             LabelingResult& result) {
+  result.local_search_flips = ImproveLabels(energy, options.local_search_passes, result.labels);
+  result.group_move_changes =
+      ImproveByGroupMoves(energy, options.group_move_passes, result.labels);
+  WindowPolishOptions windows;
+  if (result.backend != "cbc" && result.backend != "maxflow") {
+    windows.window_cells = options.window_cells;
+    windows.max_nodes = options.window_max_nodes;
+    windows.max_windows = options.window_max_count;
+  }
+  const WindowPolishStats polished =
+      PolishInWindows(energy, result.relaxed, windows, ctx, result.labels);
+  result.windows = polished.windows;
+  result.improved_windows = polished.improved_windows;
+  result.window_changes = polished.changed_cells;
+  result.labels_objective =
+      result.local_search_flips + result.group_move_changes + result.window_changes == 0
+          ? result.rounded_objective
+          : energy.Evaluate(std::span<const std::uint8_t>(result.labels));
+  const bool exact = result.backend == "cbc" || result.backend == "maxflow";
+  result.method = result.backend + (exact ? " integer program" : " lp, rounding");
+  if (options.local_search_passes > 0) result.method += ", local search";
+  if (options.group_move_passes > 0) result.method += ", group moves";
+  if (polished.windows > 0) {
+    result.method += ", exact windows of " + std::to_string(options.window_cells) + " cells (cbc)";
+  }
+  return polished.whole_energy_proven;
+}
+
 // Band strategy (band_fixing.h): max-flow of the pairwise part, then the LP of the cells near
 // its surface with every other cell fixed. Sizes reported are those of the full LP (`full`) and,
 // in the backend name, the band's own backend.
@@ -43,8 +111,18 @@ LabelingResult SolveInBand(const EnergyInput& energy, const LabelingOptions& opt
   LabelingOptions inner = options;
   inner.backend = "auto";
   inner.auto_band_min_columns = std::numeric_limits<std::size_t>::max();
+  inner.local_search_passes = inner.group_move_passes = 0;
+  inner.window_cells = 0;
   LabelingResult result = Solve(banded, inner, ctx);
+  // The moves and windows work on the whole energy: they may change cells outside the band.
+  Improve(energy, options, ctx, result);
   result.backend = "band+" + result.backend;
+  result.method = "band (lp of the cells near the max-flow surface, the others fixed), " +
+                  result.method;
+  // The band's LP optimum bounds nothing of the full energy; the pairwise minimum does.
+  result.lower_bound = energy.Evaluate(std::span<const std::uint8_t>(pairwise)) -
+                       HigherOrderEnergy(energy, pairwise);
+  result.lower_bound_source = "pairwise optimum";
   result.band_lp_columns = result.lp_columns;
   result.lp_columns = full.lp_columns;
   result.lp_rows = full.lp_rows;
@@ -76,6 +154,16 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
     solution = SolveWithMaxflow(reduced, ctx);
   } else if (result.backend == "pdhg") {
     solution = SolveLpWithPdhg(lp, options, ctx);
+  } else if (result.backend == "cbc") {
+    IlpLimits limits;
+    limits.time_limit_seconds = options.time_limit_seconds;
+    // First incumbent: the max-flow labels of the pairwise part (any labelling is feasible).
+    const std::vector<std::uint8_t> pairwise = PairwiseLabels(energy, ctx);
+    std::vector<double> incumbent(reduced.NumFree());
+    for (std::size_t j = 0; j < incumbent.size(); ++j) {
+      incumbent[j] = pairwise[reduced.cell_of_column[j].index()];
+    }
+    solution = SolveIlpWithCbc(lp, reduced.NumFree(), incumbent, limits, ctx);
   } else {
     ThrowError(ErrorCode::kInvalidOptions, kStage, "unknown backend '" + result.backend + "'");
   }
@@ -94,12 +182,14 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
   result.fractional_cells = rounded.fractional_cells;
   result.tie_cells = rounded.tie_cells;
   result.rounded_objective = energy.Evaluate(std::span<const std::uint8_t>(result.labels));
-  result.local_search_flips = ImproveLabels(energy, options.local_search_passes, result.labels);
-  result.labels_objective = result.local_search_flips == 0
-                                ? result.rounded_objective
-                                : energy.Evaluate(std::span<const std::uint8_t>(result.labels));
+  const bool whole_energy_proven = Improve(energy, options, ctx, result);
   result.status = solution.status;
   result.iterations = solution.iterations;
+  SetLowerBound(result, lp, solution);
+  if (whole_energy_proven) {  // one window held every free cell
+    result.lower_bound = result.labels_objective;
+    result.lower_bound_source = "integer optimum";
+  }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -109,9 +199,13 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
 
 Status LabelingOptions::Validate() const {
   if (backend != "auto" && backend != "clp" && backend != "clp-barrier" && backend != "maxflow" &&
-      backend != "pdhg" && backend != "band") {
+      backend != "pdhg" && backend != "band" && backend != "cbc") {
     return InvalidOption("backend: '" + backend +
-                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band");
+                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band, cbc");
+  }
+  if (backend == "cbc" && !CbcAvailable()) {
+    return InvalidOption("backend: 'cbc' is not in this build (install coinor-libcbc-dev and "
+                         "reconfigure)");
   }
   if (band_rings < 0 || band_rings > 16) return InvalidOption("band_rings: must be in [0, 16]");
   if (!(clp_tolerance > 0.0 && clp_tolerance <= 1e-2)) {
@@ -124,6 +218,11 @@ Status LabelingOptions::Validate() const {
   if (local_search_passes < 0 || local_search_passes > 1000) {
     return InvalidOption("local_search_passes: must be in [0, 1000]");
   }
+  if (group_move_passes < 0 || group_move_passes > 1000) {
+    return InvalidOption("group_move_passes: must be in [0, 1000]");
+  }
+  if (window_cells > 4096) return InvalidOption("window_cells: must be in [0, 4096]");
+  if (window_max_nodes < 1) return InvalidOption("window_max_nodes: must be >= 1");
   if (!(time_limit_seconds >= 0.0) || !std::isfinite(time_limit_seconds)) {
     return InvalidOption("time_limit_seconds: must be finite and >= 0");
   }

@@ -20,15 +20,22 @@
 ///               else "clp" up to auto_clp_max_columns LP columns, else "pdhg" (see
 ///               docs/design/lp_backend.md for the measurements).
 ///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
+///  - "cbc":     COIN-OR Cbc branch and cut on the integer program itself (cells 0/1): the
+///               integral optimum when it proves one (status "optimal"), else the best labelling
+///               within time_limit_seconds (status "time limit"). Exponential in the worst case:
+///               for small energies, tests and measurements of the rounding gap. Optional at
+///               build time (cbc_backend.h).
 ///
 /// Rounding: label_c = 1 if x_c > 0.5 + kTieTolerance, 0 if x_c < 0.5 - kTieTolerance.
 /// Ties (|x_c - 0.5| <= kTieTolerance) are decided one by one in increasing CellId order: each
 /// takes the label of lower energy given the labels decided so far (undecided ties count as
 /// empty); on equal energy the cell is empty. Fixed cells keep their label. Then local search
 /// (LabelingOptions::local_search_passes, on by default) flips single free cells in id order
-/// while that lowers the energy.
+/// while that lowers the energy, and group moves (group_move_passes, on by default) give the free
+/// cells of one term at a time their best joint labelling.
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,7 +49,8 @@ namespace linesurf::solver {
 inline constexpr double kTieTolerance = 1e-7;
 
 struct LabelingOptions {
-  /// "clp", "maxflow", "pdhg" or "auto" (default: picks per model size, see above).
+  /// "auto" (default: picks per model size, see above), "clp", "clp-barrier", "maxflow",
+  /// "pdhg", "band" or "cbc".
   std::string backend = "auto";
   /// Primal/dual feasibility tolerance of the simplex (Clp's primal and dual tolerances); range
   /// (0, 1e-2]. Clp's default.
@@ -68,6 +76,16 @@ struct LabelingOptions {
   /// range [0, 1000]. It only ever lowers the energy of the labels: on grid energies with
   /// parity terms the rounded labels' energy drops by 30-40 % (docs/solver.md).
   int local_search_passes = 10;
+  /// Sweeps of group moves after the local search (group_moves.h: the free cells of one term
+  /// take their best joint labelling); 0 = none; range [0, 1000]. Never raises the energy.
+  int group_move_passes = 10;
+  /// Exact solves of windows after the moves (window_polish.h; needs the Cbc backend, skipped
+  /// in a build without it): free cells per window, 0 = none; range [0, 4096].
+  std::size_t window_cells = 64;
+  /// Branch-and-bound nodes per window, >= 1 (deterministic, unlike a time limit).
+  std::int64_t window_max_nodes = 200;
+  /// Windows at most; >= 0.
+  std::size_t window_max_count = 100000;
 
   /// Names the first offending field.
   [[nodiscard]] Status Validate() const;
@@ -86,10 +104,27 @@ struct LabelingResult {
   double labels_objective = 0.0;
   /// Energy of the rounded labels before local search.
   double rounded_objective = 0.0;
+  /// The best proven lower bound on the integral optimum of the energy (so labels_objective -
+  /// lower_bound bounds how far the labels are from optimal); -infinity when none is known.
+  double lower_bound = -std::numeric_limits<double>::infinity();
+  /// Where lower_bound comes from: "lp optimum" (clp), "lp dual bound" (pdhg: the Lagrangian
+  /// bound of its dual point, dual_bound.h; its relaxed_objective is a primal value, not a
+  /// bound), "integer optimum" (cbc proved it, maxflow, or one exact window held every free
+  /// cell), "branch and bound" (cbc stopped early), "pairwise optimum" (band: the max-flow
+  /// minimum of the unary and pairwise terms, the others being >= 0), "none".
+  std::string lower_bound_source = "none";
   /// LP columns of the band's own LP ("band" backend only; 0 otherwise).
   std::size_t band_lp_columns = 0;
   /// Cells flipped by local search.
   std::size_t local_search_flips = 0;
+  /// Cells changed by group moves (and the single flips between their sweeps).
+  std::size_t group_move_changes = 0;
+  /// Windows solved exactly after the moves, those that lowered the energy, cells changed.
+  std::size_t windows = 0;
+  std::size_t improved_windows = 0;
+  std::size_t window_changes = 0;
+  /// How the labels were made, e.g. "clp lp, rounding, local search, group moves".
+  std::string method;
   /// "optimal", or the backend's own word for a successful stop.
   std::string status;
   /// Backend that actually ran ("auto" resolved).

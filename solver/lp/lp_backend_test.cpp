@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "solver/lp/backends/cbc/cbc_backend.h"
 #include "solver/testing/random_energy.h"
 
 namespace linesurf::solver {
@@ -202,6 +203,8 @@ TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
   LabelingOptions plain;
   plain.backend = "clp";
   plain.local_search_passes = 0;
+  plain.group_move_passes = 0;
+  plain.window_cells = 0;
   const auto rounded = SolveLabeling(e, plain, RunContext{});
   LabelingOptions searched = plain;
   searched.local_search_passes = 10;
@@ -310,6 +313,165 @@ TEST(SolveLabeling, BandOnAGridEnergyIsCloseToTheFullLp) {
   EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
   // The labels of the band are within 5 % of the energy of the full LP's labels.
   EXPECT_LE(band.labels_objective, 1.05 * clp.labels_objective);
+}
+
+}  // namespace
+}  // namespace linesurf::solver
+
+namespace linesurf::solver {
+namespace {
+
+TEST(SolveLabeling, CbcFindsTheBruteForceOptimum) {
+  if (!CbcAvailable()) GTEST_SKIP() << "this build has no Cbc";
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 14;
+    spec.num_pairs = 20;
+    spec.num_structural = 5;
+    spec.num_parity = 6;
+    spec.fixed_fraction = 0.15;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const double best = BruteForceMinimum(e);
+    const LabelingResult cbc = MustSolve(e, "cbc");
+    EXPECT_EQ(cbc.status, "optimal") << seed;
+    EXPECT_EQ(cbc.lower_bound_source, "integer optimum") << seed;
+    EXPECT_NEAR(cbc.labels_objective, best, kObjectiveTolerance) << seed;
+    EXPECT_NEAR(cbc.labels_objective, e.Evaluate(std::span<const std::uint8_t>(cbc.labels)), kExact);
+    EXPECT_NEAR(cbc.lower_bound, best, kObjectiveTolerance) << seed;
+    for (std::size_t c = 0; c < e.NumCells(); ++c) {
+      const CellFix f = e.fixed[CellId(c)];
+      if (f != CellFix::kFree) {
+        EXPECT_EQ(cbc.labels[c], f == CellFix::kFull ? 1 : 0);
+      }
+    }
+  }
+}
+
+TEST(SolveLabeling, LowerBoundsAreBelowTheIntegralOptimum) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 14;
+    spec.num_pairs = 20;
+    spec.num_structural = 5;
+    spec.num_parity = 6;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const double best = BruteForceMinimum(e);
+    for (const char* backend : {"clp", "band"}) {
+      const LabelingResult r = MustSolve(e, backend);
+      EXPECT_NE(r.lower_bound_source, "none") << backend;
+      EXPECT_LE(r.lower_bound, best + kObjectiveTolerance) << backend << " seed " << seed;
+      EXPECT_GE(r.labels_objective, best - kObjectiveTolerance) << backend << " seed " << seed;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linesurf::solver
+
+namespace linesurf::solver {
+namespace {
+
+LabelingResult SolveWith(const EnergyInput& e, LabelingOptions options) {
+  auto result = SolveLabeling(e, options, RunContext{});
+  EXPECT_TRUE(result) << (result ? "" : result.error().ToString());
+  return result ? std::move(result).value() : LabelingResult{};
+}
+
+// The labelling of round 1: rounding and single-cell local search only.
+LabelingOptions RoundingAndLocalSearch(const std::string& backend) {
+  LabelingOptions o;
+  o.backend = backend;
+  o.group_move_passes = 0;
+  o.window_cells = 0;
+  return o;
+}
+
+TEST(ImprovedLabelling, NeverWorseThanLocalSearchAndOptimalWhereCbcProvesIt) {
+  if (!CbcAvailable()) GTEST_SKIP() << "this build has no Cbc";
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 40;  // within one window (random energies are hard for Cbc beyond that)
+    spec.num_pairs = spec.num_cells * 2;
+    spec.num_structural = spec.num_cells / 4;
+    spec.num_parity = spec.num_cells / 3;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    for (const char* backend : {"clp", "pdhg"}) {
+      const LabelingResult before = SolveWith(e, RoundingAndLocalSearch(backend));
+      LabelingOptions defaults;
+      defaults.backend = backend;
+      const LabelingResult after = SolveWith(e, defaults);
+      LabelingOptions exact;
+      exact.backend = "cbc";
+      const LabelingResult optimum = SolveWith(e, exact);
+      ASSERT_EQ(optimum.status, "optimal") << seed;
+      EXPECT_LE(after.labels_objective, before.labels_objective + kExact) << backend << seed;
+      EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance)
+          << backend << " seed " << seed;
+      if (after.windows > 0) {  // the window held every free cell: the optimum is proven
+        EXPECT_EQ(after.lower_bound_source, "integer optimum") << backend << " seed " << seed;
+      }
+    }
+  }
+}
+
+// 5^3 free cells: several windows of 64.
+TEST(ImprovedLabelling, ReachesCbcsOptimumOnASmallGridEnergy) {
+  if (!CbcAvailable()) GTEST_SKIP() << "this build has no Cbc";
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 7;
+  const EnergyInput e = testing::GridEnergy(spec);
+  LabelingOptions exact;
+  exact.backend = "cbc";
+  const LabelingResult optimum = SolveWith(e, exact);
+  ASSERT_EQ(optimum.status, "optimal");
+  const LabelingResult before = SolveWith(e, RoundingAndLocalSearch("clp"));
+  LabelingOptions defaults;
+  defaults.backend = "clp";
+  const LabelingResult after = SolveWith(e, defaults);
+  EXPECT_LE(after.labels_objective, before.labels_objective + kExact);
+  EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance);
+  EXPECT_LE(after.lower_bound, optimum.labels_objective + kObjectiveTolerance);
+}
+
+TEST(ImprovedLabelling, IsIdenticalForAnyThreadCount) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 9;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult one = MustSolve(e, "clp", 1);
+  for (int threads : {2, 3, 8}) {
+    const LabelingResult many = MustSolve(e, "clp", threads);
+    EXPECT_EQ(many.labels, one.labels) << threads;
+    EXPECT_EQ(many.windows, one.windows) << threads;
+  }
+}
+
+}  // namespace
+}  // namespace linesurf::solver
+
+namespace linesurf::solver {
+namespace {
+
+TEST(SolveLabeling, PdhgDualBoundIsAValidAndCloseLowerBound) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 10;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult clp = MustSolve(e, "clp");
+  const LabelingResult pdhg = MustSolve(e, "pdhg");
+  EXPECT_EQ(pdhg.lower_bound_source, "lp dual bound");
+  EXPECT_LE(pdhg.lower_bound, clp.relaxed_objective + kObjectiveTolerance);
+  EXPECT_GE(pdhg.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement));
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    testing::RandomEnergySpec random;
+    random.seed = seed;
+    const EnergyInput r = testing::RandomEnergy(random);
+    // Without windows: one window holding every cell would prove the (higher) integer optimum.
+    const LabelingResult pdhg_only = SolveWith(r, RoundingAndLocalSearch("pdhg"));
+    EXPECT_EQ(pdhg_only.lower_bound_source, "lp dual bound");
+    EXPECT_LE(pdhg_only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExact) << seed;
+  }
 }
 
 }  // namespace

@@ -5,89 +5,9 @@
 
 #include "engine/core/exception.h"
 #include "solver/lp/lp_backend.h"
+#include "solver/energy/term_incidence.h"
 
 namespace linesurf::solver {
-namespace {
-
-enum class TermKind : std::uint8_t { kPair, kStructural, kParity };
-struct TermRef {
-  TermKind kind;
-  std::uint32_t index;
-};
-
-// Energy of the terms touching `cell` (its unary included) under `labels`.
-double LocalEnergy(const EnergyInput& e, std::span<const TermRef> terms, CellId cell,
-                   const std::vector<std::uint8_t>& labels) {
-  const double x = labels[cell.index()];
-  double value = e.cost_if_empty[cell] * (1.0 - x) + e.cost_if_full[cell] * x;
-  for (const TermRef& t : terms) {
-    if (t.kind == TermKind::kPair) {
-      const PairTerm& p = e.pairs[t.index];
-      value += p.weight * std::abs(double(labels[p.a.index()]) - double(labels[p.b.index()]));
-    } else if (t.kind == TermKind::kStructural) {
-      double sum = 0.0;
-      for (CellId c : e.StructuralGroup(t.index)) sum += labels[c.index()];
-      value += e.structural_weights[t.index] * std::max(0.0, 1.0 - sum);
-    } else {
-      const auto cells = e.ParityGroup(t.index);
-      const auto nu = e.ParitySigns(t.index);
-      double sum = 0.0;
-      for (std::size_t i = 0; i < cells.size(); ++i) sum += nu[i] * double(labels[cells[i].index()]);
-      value += e.parity_weights[t.index] * std::abs(sum);
-    }
-  }
-  return value;
-}
-
-// Terms touching each of a list of cells, in term order (CSR).
-class TermIncidence {
- public:
-  TermIncidence(const EnergyInput& e, std::span<const CellId> cells) {
-    std::vector<std::uint32_t> slot(e.NumCells(), kNone);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      slot[cells[i].index()] = static_cast<std::uint32_t>(i);
-    }
-    offsets_.assign(cells.size() + 1, 0);
-    // Two passes (count, fill) over the same term walk.
-    for (int pass = 0; pass < 2; ++pass) {
-      auto add = [&](CellId c, TermKind kind, std::size_t index) {
-        const std::uint32_t s = slot[c.index()];
-        if (s == kNone) return;
-        if (pass == 0) {
-          ++offsets_[s + 1];
-        } else {
-          terms_[next_[s]++] = {kind, static_cast<std::uint32_t>(index)};
-        }
-      };
-      for (std::size_t p = 0; p < e.pairs.size(); ++p) {
-        add(e.pairs[p].a, TermKind::kPair, p);
-        add(e.pairs[p].b, TermKind::kPair, p);
-      }
-      for (std::size_t g = 0; g < e.NumStructuralGroups(); ++g) {
-        for (CellId c : e.StructuralGroup(g)) add(c, TermKind::kStructural, g);
-      }
-      for (std::size_t g = 0; g < e.NumParityGroups(); ++g) {
-        for (CellId c : e.ParityGroup(g)) add(c, TermKind::kParity, g);
-      }
-      if (pass == 0) {
-        for (std::size_t i = 0; i < cells.size(); ++i) offsets_[i + 1] += offsets_[i];
-        terms_.resize(offsets_.back());
-        next_.assign(offsets_.begin(), offsets_.end() - 1);
-      }
-    }
-  }
-  [[nodiscard]] std::span<const TermRef> Terms(std::size_t i) const {
-    return {terms_.data() + offsets_[i], terms_.data() + offsets_[i + 1]};
-  }
-
- private:
-  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-  std::vector<std::uint32_t> offsets_;
-  std::vector<std::uint32_t> next_;
-  std::vector<TermRef> terms_;
-};
-
-}  // namespace
 
 RoundedLabels RoundLabels(const EnergyInput& energy, std::span<const double> relaxed) {
   LINESURF_ASSERT(relaxed.size() == energy.NumCells());

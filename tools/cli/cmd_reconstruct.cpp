@@ -11,6 +11,7 @@
 #include "tools/cli/scene_input.h"
 #include "tools/eval/mesh_topology.h"
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -87,10 +88,17 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;
   j["sigma"] = s.sigma;
+  // A lower bound of -infinity (none known) and its gap are null.
+  const bool bounded = std::isfinite(s.lower_bound);
   j["solver"] = {{"backend", s.solver_backend},
+                 {"method", s.labeling_method},
                  {"status", s.solver_status},
                  {"objective", s.objective},
+                 {"rounded_objective", s.rounded_objective},
                  {"relaxed_objective", s.relaxed_objective},
+                 {"lower_bound", bounded ? nlohmann::json(s.lower_bound) : nlohmann::json()},
+                 {"lower_bound_source", s.lower_bound_source},
+                 {"gap", bounded ? nlohmann::json(s.objective - s.lower_bound) : nlohmann::json()},
                  {"fractional_cells", s.fractional_cells}};
   j["mesh"] = {{"vertices", s.mesh_vertices}, {"faces", s.mesh_faces},
                {"closed", s.mesh_closed},     {"manifold", s.mesh_manifold},
@@ -204,7 +212,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
       ->capture_default_str();
   sub->add_flag("--structural-as-textural", e.structural_as_textural,
                 "Ablation: structural segments count as two textural ones");
-  sub->add_option("--solver", o.solver.backend, "LP backend: clp, maxflow, pdhg, band or auto")
+  sub->add_option("--solver", o.solver.backend, "Labelling backend: clp, maxflow, pdhg, band, cbc or auto")
       ->capture_default_str();
   sub->add_option("--time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)")
       ->capture_default_str();

@@ -28,6 +28,8 @@ endif()
 
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(CLP REQUIRED IMPORTED_TARGET clp)
+# COIN-OR Cbc (branch and cut): optional, for the `cbc` backend only (solver/CMakeLists.txt).
+pkg_check_modules(CBC IMPORTED_TARGET cbc)
 
 # libmaxflow (Boykov-Kolmogorov max-flow, GPL-3+): pkg-config module "maxflow".
 pkg_check_modules(MAXFLOW REQUIRED IMPORTED_TARGET maxflow)

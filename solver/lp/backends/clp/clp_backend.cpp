@@ -8,10 +8,9 @@
 #include <ClpEventHandler.hpp>
 #include <ClpSimplex.hpp>
 #include <ClpSolve.hpp>
-#include <CoinFinite.hpp>
-#include <CoinPackedMatrix.hpp>
 
 #include "engine/core/exception.h"
+#include "solver/lp/backends/coin/coin_problem.h"
 
 namespace linesurf::solver {
 namespace {
@@ -47,12 +46,6 @@ class StopHandler : public ClpEventHandler {
   bool* timed_out_;
 };
 
-double ToCoin(double value) {
-  if (value == kLpInfinity) return COIN_DBL_MAX;
-  if (value == -kLpInfinity) return -COIN_DBL_MAX;
-  return value;
-}
-
 const char* ClpStatusName(int status) {
   switch (status) {
     case 0: return "optimal";
@@ -69,7 +62,6 @@ const char* ClpStatusName(int status) {
 
 LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
                           const LabelingOptions& options, const RunContext& ctx) {
-  const int num_rows = static_cast<int>(lp.NumRows());
   const int num_cols = static_cast<int>(lp.NumColumns());
   LpSolution solution;
   if (num_cols == 0) {
@@ -77,27 +69,13 @@ LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
     solution.status = "optimal";
     return solution;
   }
-  std::vector<int> indices(lp.row_columns.begin(), lp.row_columns.end());
-  std::vector<CoinBigIndex> starts(lp.row_offsets.begin(), lp.row_offsets.end());
-  std::vector<int> lengths(static_cast<std::size_t>(num_rows));
-  for (int r = 0; r < num_rows; ++r) {
-    lengths[static_cast<std::size_t>(r)] =
-        static_cast<int>(lp.row_offsets[r + 1] - lp.row_offsets[r]);
-  }
-  const CoinPackedMatrix matrix(false, num_cols, num_rows,
-                                static_cast<CoinBigIndex>(lp.NumNonzeros()), lp.row_values.data(),
-                                indices.data(), starts.data(), lengths.data());
-  std::vector<double> col_lower(lp.col_lower), col_upper(lp.col_upper);
-  std::vector<double> row_lower(lp.row_lower), row_upper(lp.row_upper);
-  for (auto* v : {&col_lower, &col_upper, &row_lower, &row_upper}) {
-    for (double& x : *v) x = ToCoin(x);
-  }
+  const CoinProblem coin = ToCoinProblem(lp);
 
   ClpSimplex model;
   model.setLogLevel(0);
   model.messageHandler()->setLogLevel(0);
-  model.loadProblem(matrix, col_lower.data(), col_upper.data(), lp.objective.data(),
-                    row_lower.data(), row_upper.data());
+  model.loadProblem(coin.matrix, coin.col_lower.data(), coin.col_upper.data(),
+                    lp.objective.data(), coin.row_lower.data(), coin.row_upper.data());
   model.setPrimalTolerance(options.clp_tolerance);
   model.setDualTolerance(options.clp_tolerance);
   model.setOptimizationDirection(1.0);

@@ -368,7 +368,7 @@ class Pdhg {
       for (const auto* candidate : {&current, &average}) {
         if (Converged(*candidate, eps, b_norm, c_norm)) {
           const bool is_avg = candidate == &average;
-          return Finish(is_avg ? x_avg : x, it);
+          return Finish(is_avg ? x_avg : x, is_avg ? y_avg : y, it);
         }
       }
       const double merit_current = Merit(current, omega);
@@ -416,11 +416,16 @@ class Pdhg {
            e.Gap() <= eps * (1.0 + std::abs(e.primal_objective) + std::abs(e.dual_objective));
   }
 
-  LpSolution Finish(const std::vector<double>& x_scaled, std::int64_t iterations) const {
+  LpSolution Finish(const std::vector<double>& x_scaled, const std::vector<double>& y_scaled,
+                    std::int64_t iterations) const {
     LpSolution solution;
     solution.columns.resize(x_scaled.size());
     for (std::size_t j = 0; j < x_scaled.size(); ++j) {
       solution.columns[j] = std::clamp(x_scaled[j] * s_.col_scale[j], lp_.col_lower[j], lp_.col_upper[j]);
+    }
+    solution.row_duals.resize(y_scaled.size());
+    for (std::size_t r = 0; r < y_scaled.size(); ++r) {
+      solution.row_duals[r] = y_scaled[r] * s_.row_scale[r];
     }
     solution.objective = lp_.Evaluate(solution.columns);
     solution.status = "optimal (tolerance " + std::to_string(options_.pdhg_tolerance) + ")";

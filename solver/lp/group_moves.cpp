@@ -1,0 +1,183 @@
+#include "solver/lp/group_moves.h"
+
+#include "engine/core/exception.h"
+#include "solver/energy/term_incidence.h"
+#include "solver/lp/round_labels.h"
+
+#include <bit>
+#include <cmath>
+
+namespace linesurf::solver {
+namespace {
+
+// Sweeps of single flips between group sweeps.
+constexpr int kFlipPasses = 10;
+
+// The cells of a term, in storage order.
+std::span<const CellId> TermCells(const EnergyInput& e, TermRef t, CellId (&pair)[2]) {
+  if (t.kind == TermKind::kPair) {
+    pair[0] = e.pairs[t.index].a;
+    pair[1] = e.pairs[t.index].b;
+    return pair;
+  }
+  return t.kind == TermKind::kStructural ? e.StructuralGroup(t.index) : e.ParityGroup(t.index);
+}
+
+// Every term in order: pairs, structural groups, parity groups.
+template <typename Visit>
+void ForEachTerm(const EnergyInput& e, Visit&& visit) {
+  for (std::size_t p = 0; p < e.NumPairs(); ++p) {
+    visit(TermRef{TermKind::kPair, static_cast<std::uint32_t>(p)});
+  }
+  for (std::size_t g = 0; g < e.NumStructuralGroups(); ++g) {
+    visit(TermRef{TermKind::kStructural, static_cast<std::uint32_t>(g)});
+  }
+  for (std::size_t g = 0; g < e.NumParityGroups(); ++g) {
+    visit(TermRef{TermKind::kParity, static_cast<std::uint32_t>(g)});
+  }
+}
+
+class GroupMover {
+ public:
+  GroupMover(const EnergyInput& e, std::span<const CellId> free)
+      : e_(e), free_(free.begin(), free.end()), incidence_(e, free), dirty_(free.size(), 0) {}
+
+  // Marks the free cells of every term whose cells carry different labels, and the free cells
+  // whose own unary cost prefers the other label.
+  void MarkSurface(const std::vector<std::uint8_t>& labels) {
+    for (std::size_t i = 0; i < free_.size(); ++i) {
+      const CellId c = free_[i];
+      const double keep = labels[c.index()] != 0 ? e_.cost_if_full[c] : e_.cost_if_empty[c];
+      const double flip = labels[c.index()] != 0 ? e_.cost_if_empty[c] : e_.cost_if_full[c];
+      if (flip < keep) dirty_[i] = 1;
+    }
+    ForEachTerm(e_, [&](TermRef t) {
+      CellId pair[2];
+      const auto cells = TermCells(e_, t, pair);
+      bool mixed = false;
+      for (CellId c : cells) mixed = mixed || labels[c.index()] != labels[cells[0].index()];
+      if (mixed) MarkFree(cells);
+    });
+  }
+
+  // Marks the free cells sharing a term with a cell whose label differs between `a` and `b`.
+  void MarkAroundChanges(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+    for (std::size_t i = 0; i < free_.size(); ++i) {
+      if (a[free_[i].index()] == b[free_[i].index()]) continue;
+      dirty_[i] = 1;
+      for (const TermRef& t : incidence_.Terms(i)) {
+        CellId pair[2];
+        MarkFree(TermCells(e_, t, pair));
+      }
+    }
+  }
+
+  // One sweep over the terms touching a marked cell; clears the marks. Returns cells changed.
+  std::size_t Sweep(std::vector<std::uint8_t>& labels) {
+    const std::vector<std::uint8_t> marked = std::move(dirty_);
+    dirty_.assign(marked.size(), 0);
+    std::size_t changed = 0;
+    ForEachTerm(e_, [&](TermRef t) {
+      CellId pair[2];
+      std::uint32_t slots[kMaxGroupMoveCells];
+      std::size_t k = 0;
+      bool touched = false;
+      for (CellId c : TermCells(e_, t, pair)) {
+        const std::uint32_t s = incidence_.Slot(c);
+        if (s == TermIncidence::kNone) continue;
+        if (k == kMaxGroupMoveCells) return;
+        slots[k++] = s;
+        touched = touched || marked[s] != 0;
+      }
+      if (k >= 2 && touched) changed += BestJointLabels(std::span(slots, k), labels);
+    });
+    return changed;
+  }
+
+ private:
+  void MarkFree(std::span<const CellId> cells) {
+    for (CellId c : cells) {
+      const std::uint32_t s = incidence_.Slot(c);
+      if (s != TermIncidence::kNone) dirty_[s] = 1;
+    }
+  }
+
+  // Gray-code walk over the 2^k labellings of the cells at `slots`; keeps the best.
+  std::size_t BestJointLabels(std::span<const std::uint32_t> slots,
+                              std::vector<std::uint8_t>& labels) {
+    std::uint8_t original[kMaxGroupMoveCells];
+    double scale = 1.0;
+    for (std::size_t j = 0; j < slots.size(); ++j) {
+      const CellId c = CellOf(slots[j]);
+      original[j] = labels[c.index()];
+      scale += std::abs(LocalEnergy(e_, incidence_.Terms(slots[j]), c, labels));
+    }
+    double delta = 0.0, best = 0.0;
+    std::uint32_t best_code = 0;
+    const std::uint32_t count = 1u << slots.size();
+    for (std::uint32_t i = 1; i < count; ++i) {
+      const std::size_t j = static_cast<std::size_t>(std::countr_zero(i));
+      const CellId c = CellOf(slots[j]);
+      const auto terms = incidence_.Terms(slots[j]);
+      const double before = LocalEnergy(e_, terms, c, labels);
+      labels[c.index()] ^= 1u;
+      delta += LocalEnergy(e_, terms, c, labels) - before;
+      if (delta < best) {
+        best = delta;
+        best_code = i ^ (i >> 1);
+      }
+    }
+    if (!(best < -kImproveTolerance * scale)) best_code = 0;
+    std::size_t changed = 0;
+    for (std::size_t j = 0; j < slots.size(); ++j) {
+      const std::uint8_t flip = (best_code >> j) & 1u;
+      labels[CellOf(slots[j]).index()] = original[j] ^ flip;
+      changed += flip;
+    }
+    if (changed > 0) {
+      for (std::size_t j = 0; j < slots.size(); ++j) {
+        if (((best_code >> j) & 1u) == 0) continue;
+        dirty_[slots[j]] = 1;
+        for (const TermRef& t : incidence_.Terms(slots[j])) {
+          CellId pair[2];
+          MarkFree(TermCells(e_, t, pair));
+        }
+      }
+    }
+    return changed;
+  }
+
+  [[nodiscard]] CellId CellOf(std::uint32_t slot) const { return free_[slot]; }
+
+  const EnergyInput& e_;
+  std::vector<CellId> free_;
+  TermIncidence incidence_;
+  std::vector<std::uint8_t> dirty_;
+};
+
+}  // namespace
+
+std::size_t ImproveByGroupMoves(const EnergyInput& energy,
+                                int max_passes,
+                                std::vector<std::uint8_t>& labels) {
+  LINESURF_ASSERT(labels.size() == energy.NumCells());
+  std::vector<CellId> free;
+  for (std::size_t c = 0; c < energy.NumCells(); ++c) {
+    if (energy.fixed[CellId(c)] == CellFix::kFree) free.push_back(CellId(c));
+  }
+  if (free.empty() || max_passes <= 0) return 0;
+  GroupMover mover(energy, free);
+  mover.MarkSurface(labels);
+  std::size_t changed = 0;
+  for (int pass = 0; pass < max_passes; ++pass) {
+    const std::size_t moved = mover.Sweep(labels);
+    const std::vector<std::uint8_t> before = labels;
+    const std::size_t flipped = ImproveLabels(energy, kFlipPasses, labels);
+    if (flipped > 0) mover.MarkAroundChanges(before, labels);
+    changed += moved + flipped;
+    if (moved + flipped == 0) break;
+  }
+  return changed;
+}
+
+}  // namespace linesurf::solver

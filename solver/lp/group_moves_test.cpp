@@ -1,0 +1,59 @@
+#include "solver/lp/group_moves.h"
+
+#include "solver/lp/round_labels.h"
+#include "solver/testing/random_energy.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace linesurf::solver {
+namespace {
+
+double Energy(const EnergyInput& e, const std::vector<std::uint8_t>& labels) {
+  return e.Evaluate(std::span<const std::uint8_t>(labels));
+}
+
+TEST(GroupMoves, FlipTogetherWhatNoSingleFlipImproves) {
+  // Two empty cells that both want to be full but pay a strong pairwise term when they differ:
+  // each single flip costs 1 - 0.6, the joint flip gains 1.2.
+  EnergyInput e;
+  e.AddCell(0.6, 0.0);
+  e.AddCell(0.6, 0.0);
+  e.AddPair(CellId(0u), CellId(1u), 1.0);
+  std::vector<std::uint8_t> labels = {0, 0};
+  EXPECT_EQ(ImproveLabels(e, 10, labels), 0u);
+  EXPECT_EQ(ImproveByGroupMoves(e, 10, labels), 2u);
+  EXPECT_EQ(labels, (std::vector<std::uint8_t>{1, 1}));
+}
+
+TEST(GroupMoves, NeverRaiseTheEnergyAndKeepFixedCells) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 60;
+    spec.num_pairs = 120;
+    spec.num_structural = 20;
+    spec.num_parity = 30;
+    spec.fixed_fraction = 0.1;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    std::vector<std::uint8_t> labels(e.NumCells());
+    for (std::size_t c = 0; c < labels.size(); ++c) {
+      const CellFix f = e.fixed[CellId(c)];
+      labels[c] = f == CellFix::kFull ? 1 : (f == CellFix::kEmpty ? 0 : (c * 7 + seed) % 3 == 0);
+    }
+    ImproveLabels(e, 10, labels);
+    const double before = Energy(e, labels);
+    ImproveByGroupMoves(e, 10, labels);
+    EXPECT_LE(Energy(e, labels), before + 1e-12) << seed;
+    for (std::size_t c = 0; c < labels.size(); ++c) {
+      const CellFix f = e.fixed[CellId(c)];
+      if (f != CellFix::kFree) {
+        EXPECT_EQ(labels[c], f == CellFix::kFull ? 1 : 0);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linesurf::solver
