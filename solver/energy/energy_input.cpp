@@ -1,10 +1,10 @@
 #include "solver/energy/energy_input.h"
 
+#include "engine/core/exception.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
-#include "engine/core/exception.h"
 
 namespace linesurf::solver {
 namespace {
@@ -16,8 +16,10 @@ Error Invalid(const std::string& message) {
 }
 
 // Checks one CSR group family; returns an empty string when valid.
-std::string CheckGroups(const char* name, const std::vector<std::uint32_t>& offsets,
-                        const std::vector<CellId>& cells, std::size_t num_groups,
+std::string CheckGroups(const char* name,
+                        const std::vector<std::uint32_t>& offsets,
+                        const std::vector<CellId>& cells,
+                        std::size_t num_groups,
                         std::size_t num_cells) {
   std::ostringstream out;
   if (offsets.size() != num_groups + 1 || offsets.front() != 0 || offsets.back() != cells.size()) {
@@ -74,6 +76,14 @@ void EnergyInput::ResizeCells(std::size_t num_cells) {
   fixed.raw().resize(num_cells, CellFix::kFree);
 }
 
+std::vector<CellId> EnergyInput::FreeCells() const {
+  std::vector<CellId> free;
+  for (std::size_t c = 0; c < NumCells(); ++c) {
+    if (fixed[CellId(c)] == CellFix::kFree) free.push_back(CellId(c));
+  }
+  return free;
+}
+
 void EnergyInput::AddPair(CellId a, CellId b, double weight) { pairs.push_back({a, b, weight}); }
 
 void EnergyInput::AddStructuralGroup(std::span<const CellId> cells, double weight) {
@@ -82,7 +92,8 @@ void EnergyInput::AddStructuralGroup(std::span<const CellId> cells, double weigh
   structural_weights.push_back(weight);
 }
 
-void EnergyInput::AddParityGroup(std::span<const CellId> cells, std::span<const std::int8_t> signs,
+void EnergyInput::AddParityGroup(std::span<const CellId> cells,
+                                 std::span<const std::int8_t> signs,
                                  double weight) {
   LINESURF_ASSERT(cells.size() == signs.size());
   parity_cells.insert(parity_cells.end(), cells.begin(), cells.end());
@@ -115,8 +126,8 @@ Status EnergyInput::Validate() const {
       return Invalid("pair " + std::to_string(p) + ": weight is not finite and >= 0");
     }
   }
-  std::string message = CheckGroups("structural", structural_offsets, structural_cells,
-                                    structural_weights.size(), n);
+  std::string message =
+      CheckGroups("structural", structural_offsets, structural_cells, structural_weights.size(), n);
   if (message.empty()) message = CheckWeights("structural group", structural_weights);
   if (message.empty()) {
     message = CheckGroups("parity", parity_offsets, parity_cells, parity_weights.size(), n);

@@ -95,6 +95,8 @@ struct EnergyInput {
 
   // ---- queries ----------------------------------------------------------------------------------
   [[nodiscard]] std::size_t NumCells() const { return cost_if_empty.size(); }
+  /// The cells with CellFix::kFree, in id order.
+  [[nodiscard]] std::vector<CellId> FreeCells() const;
   [[nodiscard]] std::size_t NumPairs() const { return pairs.size(); }
   [[nodiscard]] std::size_t NumStructuralGroups() const { return structural_weights.size(); }
   [[nodiscard]] std::size_t NumParityGroups() const { return parity_weights.size(); }

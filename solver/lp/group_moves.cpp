@@ -161,10 +161,7 @@ std::size_t ImproveByGroupMoves(const EnergyInput& energy,
                                 int max_passes,
                                 std::vector<std::uint8_t>& labels) {
   LINESURF_ASSERT(labels.size() == energy.NumCells());
-  std::vector<CellId> free;
-  for (std::size_t c = 0; c < energy.NumCells(); ++c) {
-    if (energy.fixed[CellId(c)] == CellFix::kFree) free.push_back(CellId(c));
-  }
+  const std::vector<CellId> free = energy.FreeCells();
   if (free.empty() || max_passes <= 0) return 0;
   GroupMover mover(energy, free);
   mover.MarkSurface(labels);

@@ -1,11 +1,11 @@
 #include "solver/lp/round_labels.h"
 
+#include "engine/core/exception.h"
+#include "solver/energy/term_incidence.h"
+#include "solver/lp/lp_backend.h"
+
 #include <algorithm>
 #include <cmath>
-
-#include "engine/core/exception.h"
-#include "solver/lp/lp_backend.h"
-#include "solver/energy/term_incidence.h"
 
 namespace linesurf::solver {
 
@@ -43,13 +43,11 @@ RoundedLabels RoundLabels(const EnergyInput& energy, std::span<const double> rel
   return out;
 }
 
-std::size_t ImproveLabels(const EnergyInput& energy, int max_passes,
+std::size_t ImproveLabels(const EnergyInput& energy,
+                          int max_passes,
                           std::vector<std::uint8_t>& labels) {
   LINESURF_ASSERT(labels.size() == energy.NumCells());
-  std::vector<CellId> free;
-  for (std::size_t c = 0; c < energy.NumCells(); ++c) {
-    if (energy.fixed[CellId(c)] == CellFix::kFree) free.push_back(CellId(c));
-  }
+  const std::vector<CellId> free = energy.FreeCells();
   if (free.empty() || max_passes <= 0) return 0;
   const TermIncidence incidence(energy, free);
   std::size_t flips = 0;
