@@ -16,9 +16,10 @@
 ///               terms, then the LP ("auto" among clp/pdhg) of the cells near that surface only,
 ///               every other cell fixed at its max-flow label. A heuristic: not the full LP's
 ///               optimum in general.
-///  - "auto":    "maxflow" when it is exact, else "band" above auto_band_min_columns LP columns,
-///               else "clp" up to auto_clp_max_columns LP columns, else "pdhg" (see
-///               docs/design/lp_backend.md for the measurements).
+///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
+///               else "pdhg" (see docs/design/lp_backend.md for the measurements). "band" only
+///               above auto_band_min_columns, which is off by default: band changes the result
+///               (measured on an Andalusian crop, docs/results.md "Integral labelling").
 ///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
 ///  - "cbc":     COIN-OR Cbc branch and cut on the integer program itself (cells 0/1): the
 ///               integral optimum when it proves one (status "optimal"), else the best labelling
@@ -64,9 +65,11 @@ struct LabelingOptions {
   /// parity terms Clp's dual simplex grows about cubically (0.19 s CPU at 3.8k columns, 3.4 s at
   /// 12.6k, 151 s at 42k) while pdhg stays below 0.4 s up to 12.6k (docs/design/lp_backend.md).
   std::size_t auto_clp_max_columns = 10000;
-  /// "auto" uses the band strategy above this many LP columns: the full LP of Andalusian's
-  /// complex (3e5 cells, millions of columns) did not converge with pdhg in 26 min.
-  std::size_t auto_band_min_columns = 1000000;
+  /// "auto" uses the band strategy above this many LP columns. Default: never. Band is faster
+  /// on whole real scenes (the full LP of Andalusian's 3e5-cell complex did not converge with
+  /// pdhg in 26 min) but changes the result: on a 47-plane Andalusian crop its labels' energy is
+  /// 1 % above the full LP's with 36 % fewer full cells (docs/results.md, "Integral labelling").
+  std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   /// Growth steps of the band through shared parity groups (edges and vertices); [0, 16].
   int band_rings = 1;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
