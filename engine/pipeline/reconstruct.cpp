@@ -6,6 +6,7 @@
 
 #include "engine/core/exception.h"
 #include "engine/pipeline/decide_scene_mode.h"
+#include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
@@ -102,34 +103,31 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     RunStats& stats = result.stats;
     StageTimer timer;
 
-    timer.Start("sanitize");
-    Scene scene = input;
-    if (!options.use_given_planes) {
-      scene.planes.clear();
-      scene.memberships.clear();
-    } else {
-      LINESURF_THROW_IF(scene.planes.empty() || !scene.HasMemberships(), kInvalidInput, kStage,
-                        "use_given_planes: the scene has no planes or plane memberships");
-    }
-    SanitizeResult sane = Take(SanitizeScene(std::move(scene), options.sanitize));
-    scene = std::move(sane.scene);
-    result.warnings = std::move(sane.warnings);
-    result.world_from_local = scene.world_from_local;
-    stats.input_segments = sane.stats.input_segments;
-    stage_ctx.ThrowIfCancelled(kStage);
-
-    timer.Start("detect");
+    Scene scene;
     ResultFacts facts;
-    if (!options.use_given_planes) {
+    if (options.use_given_planes) {
+      timer.Start("sanitize");
+      LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(), kInvalidInput, kStage,
+                        "use_given_planes: the scene has no planes or plane memberships");
+      SanitizeResult sane = Take(SanitizeScene(input, options.sanitize));
+      scene = std::move(sane.scene);
+      result.warnings = std::move(sane.warnings);
+      stats.input_segments = sane.stats.input_segments;
+      stage_ctx.ThrowIfCancelled(kStage);
+      timer.Start("detect");  // nothing to detect: the report lists the same stages either way
+    } else {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
-      PlaneDetectionResult planes = Take(DetectPlanes(scene, detect, stage_ctx));
-      scene.planes = std::move(planes.planes);
-      scene.memberships = std::move(planes.memberships);
-      facts.plane_cap_warning = PlaneCapWarning(planes.stats, detect.max_planes);
-      stats.capped_blocks = static_cast<std::size_t>(planes.stats.capped_blocks);
-      facts.detection_epsilon = planes.stats.epsilon;
+      DetectedScene detected =
+          Take(SanitizeAndDetectPlanes(input, options.sanitize, detect, stage_ctx, &timer));
+      scene = std::move(detected.scene);
+      result.warnings = std::move(detected.warnings);
+      stats.input_segments = detected.sanitize_stats.input_segments;
+      facts.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
+      stats.capped_blocks = static_cast<std::size_t>(detected.detection_stats.capped_blocks);
+      facts.detection_epsilon = detected.detection_stats.epsilon;
     }
+    result.world_from_local = scene.world_from_local;
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
                       "no plane: nothing to reconstruct from");
 

@@ -1,17 +1,16 @@
 // `linesurf detect INPUT -o OUT.json`: plane detection only (docs/plane_detection.md).
 
-#include "engine/detect/detect_planes.h"
 #include "engine/io/read_scene.h"
 #include "engine/io/reference_json.h"
 #include "engine/io/vertex_groups_write.h"
-#include "engine/pipeline/sanitize_scene.h"
+#include "engine/pipeline/detect_scene_planes.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 
 #include <cstdio>
-#include <optional>
+#include <memory>
 #include <string>
 
 namespace linesurf::cli {
@@ -22,8 +21,8 @@ struct DetectArgs {
   std::string output;
   std::string vg;
   std::string report;
-  std::optional<double> relative_epsilon;
   PlaneDetectionOptions options;
+  std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
 
 /// Above this many segments, a whole-scene detection gets a hint about per-block detection.
@@ -32,14 +31,14 @@ constexpr std::size_t kLargeSceneSegments = 50000;
 /// The run report: options, statistics and every plane's inlier count and total length (plane
 /// i is plane i of the output JSON).
 nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& args,
-                                const PlaneDetectionResult& r, std::size_t segments) {
-  const PlaneDetectionStats& st = r.stats;
+                                const pipeline::DetectedScene& r) {
+  const PlaneDetectionStats& st = r.detection_stats;
   nlohmann::json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
-  j["options"] = DetectionOptionsJson(args.options);
+  j["options"] = args.registry->Effective();
   j["options"]["threads"] = common.threads;
-  j["stats"] = {{"segments", segments},
+  j["stats"] = {{"segments", r.scene.segments.size()},
                 {"lines", st.lines},
                 {"epsilon", st.epsilon},
                 {"blocks", st.blocks},
@@ -65,6 +64,7 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
 }
 
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
+  if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
   OutputFiles files("detect");
   args.source.AddInputsTo(files);
   files.AddOutput("-o", args.output, kJsonExtensions);
@@ -75,40 +75,32 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
       io::ReadSceneWithWarnings(args.source.input, args.source.ReadOptions());
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
-  Scene scene = std::move(read->scene);
-  const std::size_t given_planes = scene.planes.size();
-  scene.planes.clear();  // detection ignores any given planes
-  scene.memberships.clear();
-  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(scene), {});
-  if (!sane) return ReportError(sane.error());
-  for (const std::string& w : sane->warnings) PrintWarning(common, w);
-  scene = std::move(sane->scene);
-
-  args.options.relative_epsilon = args.relative_epsilon;
-  if (args.options.block_size <= 0.0 && scene.segments.size() > kLargeSceneSegments) {
-    PrintWarning(common, std::to_string(scene.segments.size()) +
+  const std::size_t input_segments = read->scene.segments.size();
+  if (args.options.block_size <= 0.0 && input_segments > kLargeSceneSegments) {
+    PrintWarning(common, std::to_string(input_segments) +
                              " segments detected as one block: this grows faster than linearly; "
                              "--block-size (e.g. the size of one building) keeps it linear");
   }
   RunContext ctx;
   ConfigureRunContext(common, ctx);
-  Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.options, ctx);
+  Expected<pipeline::DetectedScene> detected =
+      pipeline::SanitizeAndDetectPlanes(std::move(read->scene), {}, args.options, ctx);
   if (!detected) return ReportError(detected.error());
-  const PlaneDetectionStats& st = detected->stats;
+  for (const std::string& w : detected->warnings) PrintWarning(common, w);
+  const Scene& scene = detected->scene;
+  const PlaneDetectionStats& st = detected->detection_stats;
+  const std::size_t given_planes = detected->given_planes;
   if (const std::string cap = PlaneCapWarning(st, args.options.max_planes); !cap.empty()) {
     PrintWarning(common, cap);
   }
   if (!args.report.empty()) {
-    const nlohmann::json report = DetectReportJson(common, args, *detected, scene.segments.size());
+    const nlohmann::json report = DetectReportJson(common, args, *detected);
     if (Status s = files.Write(
             args.report, [&](const auto& path) { return WriteReport(path, report, "detect"); });
         !s) {
       return ReportError(s.error());
     }
   }
-  scene.planes = std::move(detected->planes);
-  scene.memberships = std::move(detected->memberships);
-
   if (Status s = files.Write(args.output,
                              [&](const auto& path) { return io::WriteReferenceJson(scene, path); });
       !s) {
@@ -135,7 +127,7 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
                  "detect: %zu segments, eps %.6g%s; %d planes (%d before fusion, %d merges)%s\n"
                  "detect: segments on 0/1/2 planes: %lld / %lld / %lld; %lld candidates, %lld "
                  "failed draws; %.3f s (fusion %.3f s)\n",
-                 scene.segments.size(), st.epsilon, args.relative_epsilon ? " (relative)" : "",
+                 scene.segments.size(), st.epsilon, args.options.relative_epsilon ? " (relative)" : "",
                  st.planes_after_fusion, st.planes_before_fusion, st.merges,
                  given_planes ? " (given planes ignored)" : "", static_cast<long long>(st.num_l0),
                  static_cast<long long>(st.num_l1), static_cast<long long>(st.num_l2),
@@ -155,8 +147,9 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   AddSceneInputOptions(*sub, args->source);
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
-  AddDetectionOptions(*sub, args->options, args->relative_epsilon);
-  sub->add_option("--seed", args->options.seed, "Random seed")->capture_default_str();
+  args->registry = std::make_unique<OptionRegistry>(*sub);
+  RegisterDetectionOptions(*args->registry, args->options);
+  args->registry->Add("seed", args->options.seed, "Random seed");
   sub->add_option("--vg", args->vg, "Also write the planes as PolyFit/abspy vertex groups");
   sub->add_option("--report", args->report,
                   "Write the run report (JSON: options, statistics, inlier count and length of "

@@ -13,7 +13,7 @@
 
 #include <cmath>
 #include <cstdio>
-#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -26,39 +26,19 @@ struct ReconstructArgs {
   SceneInputArgs source;
   std::string output;
   std::string report;
-  std::string planes = "detect";
-  std::string scene = "auto";
-  std::optional<double> relative_epsilon;
-  std::optional<double> sigma;
   bool ascii = false;
   bool cityjson = false;
   pipeline::ReconstructOptions options;
+  std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
 
 nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::ReconstructResult& r) {
   const pipeline::RunStats& s = r.stats;
-  const pipeline::EnergyOptions& e = args.options.energy;
   nlohmann::json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
-  j["options"] = {{"planes", args.planes},
-                  {"scene", args.scene},
-                  {"seed", args.options.seed},
-                  {"threads", args.options.num_threads},
-                  {"solver", args.options.solver.backend},
-                  {"box_margin", args.options.box_margin},
-                  {"w_textural", e.textural_weight},
-                  {"w_structural", e.structural_weight},
-                  {"w_visibility", e.visibility_weight},
-                  {"w_edge", e.edge_weight},
-                  {"w_corner", e.corner_weight},
-                  {"w_area", e.area_weight},
-                  {"w_prior", e.viewpoint_prior_weight},
-                  {"samples_per_sigma", e.samples_per_sigma},
-                  {"structural_as_textural", e.structural_as_textural}};
-  if (args.planes == "detect") {
-    j["options"]["detection"] = DetectionOptionsJson(args.options.planes);
-  }
+  j["options"] = args.registry->Effective();
+  j["options"]["threads"] = args.options.num_threads;
   nlohmann::json stages = nlohmann::json::object();
   for (const auto& [name, seconds] : s.stage_seconds) stages[name] = seconds;
   j["stage_seconds"] = stages;
@@ -109,6 +89,7 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
 }
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
+  if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
   OutputFiles files("reconstruct");
   args.source.AddInputsTo(files);
   const bool cityjson = args.cityjson || io::IsCityJsonPath(args.output);
@@ -121,15 +102,7 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   for (const std::string& w : read->warnings) PrintWarning(common, w);
 
   pipeline::ReconstructOptions& options = args.options;
-  options.use_given_planes = args.planes == "given";
-  options.planes.relative_epsilon = args.relative_epsilon;
-  options.energy.sigma = args.sigma;
   options.num_threads = common.threads;
-  static const std::map<std::string, pipeline::SceneMode> kModes{
-      {"exterior", pipeline::SceneMode::kExterior},
-      {"interior", pipeline::SceneMode::kInterior},
-      {"auto", pipeline::SceneMode::kAuto}};
-  options.scene_mode = kModes.at(args.scene);
 
   RunContext ctx;
   ConfigureRunContext(common, ctx);
@@ -189,42 +162,35 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   CLI::App* sub = cmd.app;
   AddSceneInputOptions(*sub, args->source);
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
-  sub->add_option("--planes", args->planes, "Planes: detect them, or use the input's (given)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"detect", "given"}));
-  sub->add_option("--scene", args->scene,
-                  "Boundary: exterior (box cells empty), interior (full) or auto")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"exterior", "interior", "auto"}));
-  sub->add_option("--w-textural", e.textural_weight, "Textural weight")->capture_default_str();
-  sub->add_option("--w-structural", e.structural_weight, "Structural weight")
-      ->capture_default_str();
-  sub->add_option("--w-visibility", e.visibility_weight, "Visibility weight")
-      ->capture_default_str();
-  sub->add_option("--w-edge", e.edge_weight, "Edge regularisation weight")->capture_default_str();
-  sub->add_option("--w-corner", e.corner_weight, "Corner regularisation weight")
-      ->capture_default_str();
-  sub->add_option("--w-area", e.area_weight, "Area weight")->capture_default_str();
-  sub->add_option("--w-prior", e.viewpoint_prior_weight, "Viewpoint prior weight")
-      ->capture_default_str();
-  sub->add_option("--sigma", args->sigma, "Scale sigma, scene units (default: median length)");
-  sub->add_option("--samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment")
-      ->capture_default_str();
-  sub->add_flag("--structural-as-textural", e.structural_as_textural,
-                "Ablation: structural segments count as two textural ones");
-  sub->add_option("--solver", o.solver.backend, "Labelling backend: clp, maxflow, pdhg, band, cbc or auto")
-      ->capture_default_str();
-  sub->add_option("--time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)")
-      ->capture_default_str();
-  sub->add_option("--box-margin", o.box_margin, "Box margin, fraction of the extent per side")
-      ->capture_default_str();
-  sub->add_option("--seed", o.seed, "Random seed")->capture_default_str();
   sub->add_option("--report", args->report, "Write the run report (JSON) here");
-  sub->add_flag("--ascii", args->ascii, "ASCII PLY");
-  sub->add_flag("--cityjson", args->cityjson,
-                "Write CityJSON whatever the output extension (one Building per connected part)");
-  sub->add_flag("--triangulate", o.triangulate, "Triangles instead of convex polygons");
-  AddDetectionOptions(*sub, o.planes, args->relative_epsilon);
+  OptionRegistry& r = *(args->registry = std::make_unique<OptionRegistry>(*sub));
+  r.AddChoice("planes", o.use_given_planes, {{"detect", false}, {"given", true}},
+              "Planes: detect them, or use the input's");
+  r.AddChoice("scene", o.scene_mode,
+              {{"exterior", pipeline::SceneMode::kExterior},
+               {"interior", pipeline::SceneMode::kInterior},
+               {"auto", pipeline::SceneMode::kAuto}},
+              "Boundary: box cells empty (exterior), full (interior), or decided");
+  r.Add("w-textural", e.textural_weight, "Textural weight");
+  r.Add("w-structural", e.structural_weight, "Structural weight");
+  r.Add("w-visibility", e.visibility_weight, "Visibility weight");
+  r.Add("w-edge", e.edge_weight, "Edge regularisation weight");
+  r.Add("w-corner", e.corner_weight, "Corner regularisation weight");
+  r.Add("w-area", e.area_weight, "Area weight");
+  r.Add("w-prior", e.viewpoint_prior_weight, "Viewpoint prior weight");
+  r.Add("sigma", e.sigma, "Scale sigma, scene units (default: median length)");
+  r.Add("samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment");
+  r.AddFlag("structural-as-textural", e.structural_as_textural,
+            "Ablation: structural segments count as two textural ones");
+  r.Add("solver", o.solver.backend, "Labelling backend: clp, maxflow, pdhg, band, cbc or auto");
+  r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
+  r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
+  r.Add("seed", o.seed, "Random seed");
+  r.AddFlag("ascii", args->ascii, "ASCII PLY");
+  r.AddFlag("cityjson", args->cityjson,
+            "Write CityJSON whatever the output extension (one Building per connected part)");
+  r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
+  RegisterDetectionOptions(r, o.planes);
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;
 }

@@ -1,0 +1,42 @@
+#pragma once
+// Sanitise, then detect planes: the start of every run that detects its planes (`linesurf
+// detect` and Reconstruct without given planes), written once.
+
+#include "linesurf/error.h"
+
+#include "engine/core/run_context.h"
+#include "engine/core/scene.h"
+#include "engine/detect/detect_planes.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "engine/pipeline/stage_timer.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace linesurf::pipeline {
+
+struct DetectedScene {
+  /// Sanitised (local frame, see world_from_local) and holding the detected planes and one
+  /// membership per segment; the input's own planes are dropped first (detection ignores them).
+  Scene scene;
+  SanitizeStats sanitize_stats;
+  /// Sanitation's warnings, one sentence each.
+  std::vector<std::string> warnings;
+  /// The detection's numbers and per-plane support (its planes and memberships are in `scene`).
+  PlaneDetectionStats detection_stats;
+  IdVector<PlaneId, PlaneSupport> support;
+  /// How many planes the input carried (ignored).
+  std::size_t given_planes = 0;
+};
+
+/// @brief Drops the input's planes and memberships, sanitises, and detects planes.
+/// @param timer when given, times the stages "sanitize" and "detect".
+/// @return the errors of SanitizeScene and DetectPlanes (kCancelled between the two).
+[[nodiscard]] Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
+                                                              const SanitizeOptions& sanitize,
+                                                              const PlaneDetectionOptions& detect,
+                                                              const RunContext& ctx,
+                                                              StageTimer* timer = nullptr) noexcept;
+
+}  // namespace linesurf::pipeline

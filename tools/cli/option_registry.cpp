@@ -1,0 +1,78 @@
+#include "tools/cli/option_registry.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace linesurf::cli {
+namespace {
+
+constexpr const char* kStage = "config";
+
+}  // namespace
+
+OptionRegistry::OptionRegistry(CLI::App& app) : app_(app) {
+  app_.add_option("--config",
+                  config_path_,
+                  "JSON object of options (keys: the flags without '--', '_' for '-'); flags on "
+                  "the command line win");
+}
+
+CLI::Option* OptionRegistry::AddFlag(const std::string& name,
+                                     bool& field,
+                                     const std::string& help) {
+  CLI::Option* option = app_.add_flag("--" + name, field, help);
+  Register(name, option, Setter(field), [&field] { return nlohmann::json(field); });
+  return option;
+}
+
+void OptionRegistry::Register(const std::string& name,
+                              CLI::Option* option,
+                              std::function<void(const nlohmann::json&)> set,
+                              std::function<nlohmann::json()> get) {
+  std::string key = name;
+  std::replace(key.begin(), key.end(), '-', '_');
+  entries_.push_back({std::move(key), option, std::move(set), std::move(get)});
+}
+
+Status OptionRegistry::ApplyConfig() {
+  if (config_path_.empty()) return {};
+  // A config file that cannot be read is bad input (exit 3); one naming a wrong option or value
+  // is a usage error (exit 2), as the same mistake on the command line would be.
+  auto unreadable = [&](const std::string& message) {
+    return Error{ErrorCode::kInvalidInput, kStage, config_path_ + ": " + message};
+  };
+  auto bad = [&](const std::string& message) {
+    return Error{ErrorCode::kInvalidOptions, kStage, config_path_ + ": " + message};
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(config_path_, ec)) return unreadable("no such file");
+  std::ifstream in(config_path_);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in) return unreadable("cannot be read");
+  const nlohmann::json config = nlohmann::json::parse(text.str(), nullptr, false);
+  if (config.is_discarded()) return unreadable("not valid JSON");
+  if (!config.is_object()) return unreadable("expected a JSON object {\"option\": value, ...}");
+  for (const auto& [key, value] : config.items()) {
+    const auto it = std::find_if(
+        entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
+    if (it == entries_.end()) return bad("'" + key + "' is not an option of this command");
+    if (it->option->count() > 0) continue;  // given on the command line
+    try {
+      it->set(value);
+    } catch (const std::exception& e) {
+      return bad("'" + key + "': " + value.dump() + ": " + e.what());
+    }
+  }
+  return {};
+}
+
+nlohmann::ordered_json OptionRegistry::Effective() const {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const Entry& e : entries_) j[e.key] = e.get();
+  return j;
+}
+
+}  // namespace linesurf::cli
