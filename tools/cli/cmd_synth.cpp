@@ -23,6 +23,7 @@ namespace {
 struct SynthArgs {
   synth::SynthSpec spec;
   std::string noise_model = "gaussian";
+  std::string outlier_model = "uniform";
   int outlier_count = -1;
   int max_pieces = 0;
   double max_trim = -1.0;
@@ -31,8 +32,13 @@ struct SynthArgs {
 
 int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   synth::SynthSpec spec = args.spec;
-  spec.noise_model =
-      args.noise_model == "ball" ? synth::NoiseModel::kUniformBall : synth::NoiseModel::kGaussian;
+  static const std::map<std::string, synth::NoiseModel> kNoise{
+      {"gaussian", synth::NoiseModel::kGaussian},
+      {"ball", synth::NoiseModel::kUniformBall},
+      {"depth", synth::NoiseModel::kDepth}};
+  spec.noise_model = kNoise.at(args.noise_model);
+  spec.outlier_model =
+      args.outlier_model == "near" ? synth::OutlierModel::kNear : synth::OutlierModel::kUniform;
   if (args.outlier_count >= 0) spec.outlier_count = args.outlier_count;
   if (args.max_pieces > 0) spec.max_pieces = args.max_pieces;
   if (args.max_trim >= 0.0) spec.max_trim = args.max_trim;
@@ -99,7 +105,7 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
                "JSON, plane_index = true planes), DIR/ground_truth.ply, DIR/meta.json");
   cmd.app->add_option("family", args->spec.family, "Scene family")
       ->required()
-      ->check(CLI::IsMember({"cube", "house", "room", "city"}));
+      ->check(CLI::IsMember({"cube", "house", "lshape", "room", "floor", "city"}));
   cmd.app->add_option("--seed", args->spec.seed, "Random seed (same seed => identical files)")
       ->default_val(0);
   cmd.app->add_option("--size", args->spec.size, "city: number of buildings (0 = 16)")
@@ -110,9 +116,18 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
                       "--noise-model ball)")
       ->default_val(0.0)
       ->check(CLI::Range(0.0, 10.0));
-  cmd.app->add_option("--noise-model", args->noise_model, "gaussian or ball (uniform in a ball)")
+  cmd.app
+      ->add_option("--noise-model", args->noise_model,
+                   "gaussian, ball (uniform in a ball) or depth (Line3D++-like: twice the spread "
+                   "along the viewing direction)")
       ->default_val("gaussian")
-      ->check(CLI::IsMember({"gaussian", "ball"}));
+      ->check(CLI::IsMember({"gaussian", "ball", "depth"}));
+  cmd.app
+      ->add_option("--outlier-model", args->outlier_model,
+                   "uniform (in the scene box) or near (Line3D++-like false matches: moved copies "
+                   "of seen pieces)")
+      ->default_val("uniform")
+      ->check(CLI::IsMember({"uniform", "near"}));
   cmd.app->add_option("--outliers", args->spec.outlier_fraction,
                       "Fraction of output segments that are outliers, 0..0.9")
       ->default_val(0.0)
@@ -134,6 +149,13 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
   cmd.app->add_option("--offset", args->spec.offset,
                       "Metres added to x and y of everything (georeferenced-like coordinates)")
       ->default_val(0.0);
+  cmd.app->add_flag("--residual-split", args->spec.residual_split,
+                    "One sub-segment per observation with that one view, shrunk by 5 % (as the "
+                    "reference's converter made Andalusian)");
+  cmd.app->add_option("--max-view-trim", args->spec.max_view_trim,
+                      "Residual split: share of a segment a camera may miss at each end")
+      ->default_val(0.25)
+      ->check(CLI::Range(0.0, 0.45));
   cmd.app->add_option("-o,--output", args->out_dir, "Output directory (created if needed)")
       ->required();
   cmd.run = [args, &common] { return RunSynth(*args, common); };

@@ -22,14 +22,14 @@ constexpr double kHighRingRadius = 22.0;
 constexpr double kHighRingHeight = 12.0;
 constexpr double kOutlierMargin = 1.0;
 
-void AddRing(FamilyLayout& layout, int count, double radius, double height) {
+}  // namespace
+
+void AddViewRing(FamilyLayout& layout, int count, double radius, double height) {
   for (int i = 0; i < count; ++i) {
     const double a = 2.0 * std::numbers::pi * (i + 0.5) / count;
     layout.viewpoints.emplace_back(radius * std::cos(a), radius * std::sin(a), height);
   }
 }
-
-}  // namespace
 
 FamilyLayout HouseLayout(const SynthSpec& /*spec*/) {
   FamilyLayout layout;
@@ -62,8 +62,8 @@ FamilyLayout HouseLayout(const SynthSpec& /*spec*/) {
     }
   }
 
-  AddRing(layout, kGroundRingViews, kGroundRingRadius, kEyeHeight);
-  AddRing(layout, kHighRingViews, kHighRingRadius, kHighRingHeight);
+  AddViewRing(layout, kGroundRingViews, kGroundRingRadius, kEyeHeight);
+  AddViewRing(layout, kHighRingViews, kHighRingRadius, kHighRingHeight);
   layout.outliers.box.Extend(Vec3(-w - kOutlierMargin, -d - kOutlierMargin, 0));
   layout.outliers.box.Extend(Vec3(w + kOutlierMargin, d + kOutlierMargin, h + kRoofRise + kOutlierMargin));
   return layout;

@@ -21,6 +21,7 @@ enum class SynthStream : std::uint64_t {
   kCut = 2,      ///< per true line: over-segmentation and trimming
   kNoise = 3,    ///< per visible piece
   kOutlier = 4,  ///< per outlier
+  kSplit = 5,    ///< per observation of the residual split
 };
 
 /// Rng for item `index` of `stream` under `seed`.
@@ -72,12 +73,18 @@ void AddTextureRectangle(FamilyLayout& layout, const Vec3& corner, const Vec3& u
 /// floor bands every `storey` metres and ground-floor window rectangles.
 void AddFacadeTexture(FamilyLayout& layout, const SolidComponent& component, double storey);
 
+/// Adds `count` viewpoints evenly on the horizontal circle of `radius` about the z axis at
+/// `height` (half a step off the +x axis).
+void AddViewRing(FamilyLayout& layout, int count, double radius, double height);
+
 /// Number of buildings of the city family (spec.size, or its default).
 int CityBuildingCount(const SynthSpec& spec);
 
 FamilyLayout CubeLayout(const SynthSpec& spec);
 FamilyLayout HouseLayout(const SynthSpec& spec);
 FamilyLayout RoomLayout(const SynthSpec& spec);
+FamilyLayout LShapeLayout(const SynthSpec& spec);
+FamilyLayout FloorLayout(const SynthSpec& spec);
 FamilyLayout CityLayout(const SynthSpec& spec);
 
 }  // namespace linesurf::synth

@@ -13,14 +13,6 @@
 namespace linesurf::synth {
 namespace {
 
-struct AxisBox {
-  Vec3 min, max;
-  [[nodiscard]] bool Contains(const Vec3& p) const {
-    return (p.array() > min.array()).all() && (p.array() < max.array()).all();
-  }
-  [[nodiscard]] double Volume() const { return (max - min).prod(); }
-};
-
 constexpr double kWall = 0.3;
 constexpr double kRoomX = 6.0;
 constexpr double kRoomY = 5.0;
@@ -44,36 +36,7 @@ FamilyLayout RoomLayout(const SynthSpec& /*spec*/) {
     for (double y : {2.05, 2.87}) table.push_back({{x, y, 0.0}, {x + 0.08, y + 0.08, 0.70}});
   }
 
-  std::array<std::vector<double>, 3> coords;
-  for (const std::vector<AxisBox>* list : {&cavities, static_cast<const std::vector<AxisBox>*>(&table)}) {
-    for (const AxisBox& b : *list) {
-      for (int a = 0; a < 3; ++a) {
-        coords[a].push_back(b.min[a]);
-        coords[a].push_back(b.max[a]);
-      }
-    }
-  }
-  for (int a = 0; a < 3; ++a) {
-    coords[a].push_back(outer.min[a]);
-    coords[a].push_back(outer.max[a]);
-    std::sort(coords[a].begin(), coords[a].end());
-    coords[a].erase(std::unique(coords[a].begin(), coords[a].end()), coords[a].end());
-  }
-  std::vector<std::uint8_t> full;
-  for (std::size_t k = 0; k + 1 < coords[2].size(); ++k) {
-    for (std::size_t j = 0; j + 1 < coords[1].size(); ++j) {
-      for (std::size_t i = 0; i + 1 < coords[0].size(); ++i) {
-        const Vec3 c(0.5 * (coords[0][i] + coords[0][i + 1]), 0.5 * (coords[1][j] + coords[1][j + 1]),
-                     0.5 * (coords[2][k] + coords[2][k + 1]));
-        const bool in_cavity = std::any_of(cavities.begin(), cavities.end(),
-                                           [&](const AxisBox& b) { return b.Contains(c); });
-        const bool in_table = std::any_of(table.begin(), table.end(),
-                                          [&](const AxisBox& b) { return b.Contains(c); });
-        full.push_back((outer.Contains(c) && !in_cavity) || in_table ? 1 : 0);
-      }
-    }
-  }
-  layout.solid.AddComponent(RectilinearSolid(coords, full));
+  layout.solid.AddComponent(BoxesSolid(outer, cavities, table));
   layout.volume = outer.Volume();
   for (const AxisBox& b : cavities) layout.volume -= b.Volume();
   for (const AxisBox& b : table) layout.volume += b.Volume();

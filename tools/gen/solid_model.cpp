@@ -175,6 +175,39 @@ std::vector<SharpEdge> SolidModel::SharpEdges() const {
   return result;
 }
 
+SolidComponent BoxesSolid(const AxisBox& outer, std::span<const AxisBox> cavities,
+                          std::span<const AxisBox> additions) {
+  std::array<std::vector<double>, 3> coords;
+  for (std::span<const AxisBox> list : {cavities, additions}) {
+    for (const AxisBox& b : list) {
+      for (int a = 0; a < 3; ++a) {
+        coords[a].push_back(b.min[a]);
+        coords[a].push_back(b.max[a]);
+      }
+    }
+  }
+  for (int a = 0; a < 3; ++a) {
+    coords[a].push_back(outer.min[a]);
+    coords[a].push_back(outer.max[a]);
+    std::sort(coords[a].begin(), coords[a].end());
+    coords[a].erase(std::unique(coords[a].begin(), coords[a].end()), coords[a].end());
+  }
+  std::vector<std::uint8_t> full;
+  for (std::size_t k = 0; k + 1 < coords[2].size(); ++k) {
+    for (std::size_t j = 0; j + 1 < coords[1].size(); ++j) {
+      for (std::size_t i = 0; i + 1 < coords[0].size(); ++i) {
+        const Vec3 c(0.5 * (coords[0][i] + coords[0][i + 1]), 0.5 * (coords[1][j] + coords[1][j + 1]),
+                     0.5 * (coords[2][k] + coords[2][k + 1]));
+        const auto inside = [&](const AxisBox& b) { return b.Contains(c); };
+        const bool in_cavity = std::any_of(cavities.begin(), cavities.end(), inside);
+        const bool added = std::any_of(additions.begin(), additions.end(), inside);
+        full.push_back((outer.Contains(c) && !in_cavity) || added ? 1 : 0);
+      }
+    }
+  }
+  return RectilinearSolid(coords, full);
+}
+
 SolidComponent RectilinearSolid(const std::array<std::vector<double>, 3>& coords,
                                 const std::vector<std::uint8_t>& full) {
   const std::array<std::size_t, 3> nodes = {coords[0].size(), coords[1].size(), coords[2].size()};

@@ -65,6 +65,21 @@ class SolidModel {
   std::vector<SolidComponent> components_;
 };
 
+/// An axis-aligned box of the rectilinear families (room, floor).
+struct AxisBox {
+  Vec3 min, max;
+  /// Strictly inside.
+  [[nodiscard]] bool Contains(const Vec3& p) const {
+    return (p.array() > min.array()).all() && (p.array() < max.array()).all();
+  }
+  [[nodiscard]] double Volume() const { return (max - min).prod(); }
+};
+
+/// The box `outer` minus the union of `cavities`, united with `additions` (furniture standing in
+/// a cavity), as the full cells of the grid of all their coordinates (RectilinearSolid).
+[[nodiscard]] SolidComponent BoxesSolid(const AxisBox& outer, std::span<const AxisBox> cavities,
+                                        std::span<const AxisBox> additions);
+
 /// A solid made of the full cells of a rectilinear grid (room shells with niches and furniture).
 /// `coords[a]` are the strictly increasing grid coordinates along axis a; `full` labels cell
 /// (i, j, k) = [coords[0][i], coords[0][i+1]] x ... at index i + nx * (j + ny * k) with nx, ny the

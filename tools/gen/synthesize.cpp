@@ -1,10 +1,12 @@
 #include "tools/gen/synthesize.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
 
+#include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -35,6 +37,9 @@ constexpr int kMaxPieces = 16;
 constexpr double kMaxTrim = 0.4;
 constexpr int kMaxViews = 64;
 constexpr double kMaxOffset = 1e7;
+constexpr double kMaxViewTrim = 0.45;
+/// The reference converter shrinks every sub-segment by 5 % of its length, 2.5 % at each end.
+constexpr double kResidualShrink = 0.025;
 
 /// A piece of a true line after cutting and trimming.
 struct Piece {
@@ -108,6 +113,8 @@ FamilyLayout MakeLayout(const SynthSpec& spec) {
   if (spec.family == "cube") return CubeLayout(spec);
   if (spec.family == "house") return HouseLayout(spec);
   if (spec.family == "room") return RoomLayout(spec);
+  if (spec.family == "lshape") return LShapeLayout(spec);
+  if (spec.family == "floor") return FloorLayout(spec);
   return CityLayout(spec);
 }
 
@@ -129,6 +136,86 @@ void CutLine(const TrueLine& line, std::uint32_t index, const SynthSpec& spec, i
     if ((t1 - t0) * length <= 0.0) continue;
     out.push_back(Piece{Segment3{line.segment.p1 + t0 * d, line.segment.p1 + t1 * d}, index});
   }
+}
+
+/// Unit mean of the directions from the segment's midpoint to its viewpoints.
+Vec3 MeanViewDirection(const Segment3& s, const std::vector<std::uint32_t>& views,
+                       const std::vector<Vec3>& viewpoints) {
+  Vec3 sum = Vec3::Zero();
+  for (std::uint32_t v : views) sum += (viewpoints[v] - s.Midpoint()).normalized();
+  return sum.norm() > 0.0 ? Vec3(sum.normalized()) : Vec3::UnitZ();
+}
+
+Vec3 EndpointNoise(const SynthSpec& spec, const Vec3& depth, Rng& rng) {
+  switch (spec.noise_model) {
+    case NoiseModel::kGaussian:
+      return spec.noise_sigma * Vec3(rng.Normal(), rng.Normal(), rng.Normal());
+    case NoiseModel::kUniformBall:
+      return UniformInBall(rng, spec.noise_sigma);
+    case NoiseModel::kDepth: {
+      // Variances s^2/2, s^2/2 across and 2 s^2 along the depth: 3 s^2 in total.
+      const Vec3 a = depth.unitOrthogonal();
+      const Vec3 b = depth.cross(a);
+      const double across = spec.noise_sigma / std::sqrt(2.0);
+      return across * (rng.Normal() * a + rng.Normal() * b) +
+             std::sqrt(2.0) * spec.noise_sigma * rng.Normal() * depth;
+    }
+  }
+  return Vec3::Zero();
+}
+
+/// A false match: a copy of a random kept piece (of the first `pieces` segments) moved along its
+/// mean viewing direction by 0.1..1 m either way and turned by up to 15 degrees about its
+/// midpoint, with the piece's views.
+void AddNearOutlier(Scene& scene, std::size_t pieces, Rng& rng, SyntheticScene& out) {
+  constexpr double kMinShift = 0.1, kMaxShift = 1.0, kMaxTurnRad = 15.0 * 3.14159265358979 / 180.0;
+  const SegmentId source(static_cast<std::size_t>(rng.Below(pieces)));
+  const Segment3 piece = scene.segments[source];
+  const std::vector<ViewpointId> row(scene.observations[source].begin(),
+                                     scene.observations[source].end());
+  Vec3 depth = Vec3::Zero();
+  for (ViewpointId v : row) depth += (scene.viewpoints[v] - piece.Midpoint()).normalized();
+  depth = depth.norm() > 0.0 ? Vec3(depth.normalized()) : Vec3::UnitZ();
+  const double shift = rng.Uniform(kMinShift, kMaxShift) * (rng.Below(2) == 0 ? -1.0 : 1.0);
+  const Vec3 axis = UniformDirection(rng);
+  const Eigen::AngleAxisd turn(rng.Uniform(-kMaxTurnRad, kMaxTurnRad), axis);
+  const Vec3 mid = piece.Midpoint() + shift * depth;
+  const Vec3 half = turn * (0.5 * (piece.p2 - piece.p1));
+  scene.segments.push_back(Segment3{mid - half, mid + half});
+  scene.observations.AddRow(row);
+  scene.memberships.push_back(PlaneMembership{});
+  out.kinds.push_back(SegmentKind::kOutlier);
+}
+
+/// One sub-segment per (segment, view), on the segment's line, with that view only; segment
+/// order kept, sub-segments in view order.
+void SplitByObservation(const SynthSpec& spec, SyntheticScene& out) {
+  Scene& in = out.scene;
+  Scene split;
+  split.viewpoints = in.viewpoints;
+  split.planes = in.planes;
+  std::vector<SegmentKind> kinds;
+  std::uint64_t observation = 0;
+  for (std::size_t i = 0; i < in.NumSegments(); ++i) {
+    const SegmentId s(i);
+    const Segment3& seg = in.segments[s];
+    const Vec3 d = seg.p2 - seg.p1;
+    for (ViewpointId v : in.observations[s]) {
+      Rng rng = StreamRng(spec.seed, SynthStream::kSplit, observation++);
+      double t0 = rng.Uniform(0.0, spec.max_view_trim);
+      double t1 = 1.0 - rng.Uniform(0.0, spec.max_view_trim);
+      const double shrink = kResidualShrink * (t1 - t0);
+      t0 += shrink;
+      t1 -= shrink;
+      split.segments.push_back(Segment3{seg.p1 + t0 * d, seg.p1 + t1 * d});
+      const std::array<ViewpointId, 1> row{v};
+      split.observations.AddRow(row);
+      split.memberships.push_back(in.memberships[s]);
+      kinds.push_back(out.kinds[i]);
+    }
+  }
+  in = std::move(split);
+  out.kinds = std::move(kinds);
 }
 
 SyntheticScene Build(const SynthSpec& spec) {
@@ -211,13 +298,8 @@ SyntheticScene Build(const SynthSpec& spec) {
     Rng rng = StreamRng(spec.seed, SynthStream::kNoise, pi);
     Segment3 s = pieces[pi].segment;
     if (spec.noise_sigma > 0.0) {
-      for (Vec3* p : {&s.p1, &s.p2}) {
-        if (spec.noise_model == NoiseModel::kGaussian) {
-          *p += spec.noise_sigma * Vec3(rng.Normal(), rng.Normal(), rng.Normal());
-        } else {
-          *p += UniformInBall(rng, spec.noise_sigma);
-        }
-      }
+      const Vec3 depth = MeanViewDirection(s, views[pi], layout.viewpoints);
+      for (Vec3* p : {&s.p1, &s.p2}) *p += EndpointNoise(spec, depth, rng);
     }
     scene.segments.push_back(s);
     row.clear();
@@ -240,6 +322,10 @@ SyntheticScene Build(const SynthSpec& spec) {
   std::vector<std::pair<double, std::uint32_t>> near;
   for (std::size_t o = 0; o < num_outliers; ++o) {
     Rng rng = StreamRng(spec.seed, SynthStream::kOutlier, o);
+    if (spec.outlier_model == OutlierModel::kNear && inliers > 0) {
+      AddNearOutlier(scene, inliers, rng, out);
+      continue;
+    }
     Segment3 s;
     const OutlierRegion& region = layout.outliers;
     if (region.ball) {
@@ -263,6 +349,7 @@ SyntheticScene Build(const SynthSpec& spec) {
     out.kinds.push_back(SegmentKind::kOutlier);
   }
 
+  if (spec.residual_split) SplitByObservation(spec, out);
   out.ground_truth = layout.solid.ToPolygonMesh();
   if (spec.offset != 0.0) {
     const Vec3 shift(spec.offset, spec.offset, 0.0);
@@ -294,9 +381,10 @@ const char* SegmentKindName(SegmentKind kind) noexcept {
 
 Status SynthSpec::Validate() const {
   return CatchAll(kStage, [&] {
-    LINESURF_THROW_IF(family != "cube" && family != "house" && family != "room" && family != "city",
+    LINESURF_THROW_IF(family != "cube" && family != "house" && family != "room" &&
+                          family != "lshape" && family != "floor" && family != "city",
                       kInvalidOptions, kStage,
-                      "family: unknown family '" << family << "' (cube, house, room, city)");
+                      "family: unknown family '" << family << "' (cube, house, lshape, room, floor, city)");
     LINESURF_THROW_IF(size < 0 || size > kMaxCityBuildings, kInvalidOptions, kStage,
                       "size: " << size << " is outside [0, " << kMaxCityBuildings << "]");
     LINESURF_THROW_IF(!(noise_sigma >= 0.0 && noise_sigma <= kMaxNoise), kInvalidOptions, kStage,
@@ -316,6 +404,10 @@ Status SynthSpec::Validate() const {
                       kStage, "max_trim: " << *max_trim << " is outside [0, " << kMaxTrim << "]");
     LINESURF_THROW_IF(max_views < 1 || max_views > kMaxViews, kInvalidOptions, kStage,
                       "max_views: " << max_views << " is outside [1, " << kMaxViews << "]");
+    LINESURF_THROW_IF(!(max_view_trim >= 0.0 && max_view_trim <= kMaxViewTrim), kInvalidOptions,
+                      kStage,
+                      "max_view_trim: " << max_view_trim << " is outside [0, " << kMaxViewTrim
+                                        << "]");
     LINESURF_THROW_IF(!(std::abs(offset) <= kMaxOffset), kInvalidOptions, kStage,
                       "offset: " << offset << " is outside [-" << kMaxOffset << ", " << kMaxOffset
                                  << "]");

@@ -5,8 +5,9 @@
 ///
 /// Families (metric units, see docs/synthetic.md): "cube" (the 12 edges of a cube of side 2, the
 /// robustness toy of Langlois et al. 2019), "house" (gable-roofed box with windows and a door),
-/// "room" (the inside of a room with niches and a table; viewpoints inside), "city" (N buildings
-/// on a grid, viewpoints along the streets).
+/// "lshape" (an L-shaped flat-roofed building), "room" (the inside of a room with niches and a
+/// table; viewpoints inside), "floor" (a storey of three rooms with doors between them, seen from
+/// inside), "city" (N buildings on a grid, viewpoints along the streets).
 ///
 /// Determinism: the same spec (including the seed) gives identical output on every run and for
 /// every thread count (counter-based random streams, one per building / line / segment).
@@ -28,11 +29,22 @@ enum class NoiseModel {
   kGaussian,     ///< each endpoint coordinate += N(0, noise_sigma^2)
   kUniformBall,  ///< each endpoint += a point uniform in the ball of radius noise_sigma (the
                  ///< paper's "perturbed by up to" robustness study)
+  kDepth,        ///< triangulated (Line3D++-like): Gaussian, twice the standard deviation along
+                 ///< the segment's mean viewing direction than across it, same total variance
+                 ///< 3 noise_sigma^2 as kGaussian
+};
+
+/// Where outliers are drawn.
+enum class OutlierModel {
+  kUniform,  ///< in the family's box (cube: ball), uniform direction and length
+  kNear,     ///< Line3D++-like false matches: a copy of a random visible piece moved along its
+             ///< mean viewing direction by 0.1..1 m either way and turned by up to 15 degrees,
+             ///< seen from that piece's views
 };
 
 /// What a synthetic scene looks like.
 struct SynthSpec {
-  /// "cube", "house", "room" or "city".
+  /// "cube", "house", "lshape", "room", "floor" or "city".
   std::string family = "cube";
   /// Seed of every random choice.
   std::uint64_t seed = 0;
@@ -42,6 +54,7 @@ struct SynthSpec {
   double noise_sigma = 0.0;
   /// Noise distribution; Gaussian by default.
   NoiseModel noise_model = NoiseModel::kGaussian;
+  OutlierModel outlier_model = OutlierModel::kUniform;
   /// Fraction of the output segments that are outliers, in [0, 0.9]: round(f / (1 - f) * inliers).
   double outlier_fraction = 0.0;
   /// Exact number of outliers (0..1000000); overrides outlier_fraction when set.
@@ -54,6 +67,13 @@ struct SynthSpec {
   std::optional<double> max_trim;
   /// Views listed per segment: the nearest viewpoints that see it, at most this many (1..64).
   int max_views = 8;
+  /// Residual split, as the reference's converter makes Andalusian (docs/synthetic.md): every
+  /// (segment, view) becomes its own sub-segment with that one view, the part of the segment's
+  /// (noisy) line that one camera saw (each end loses a uniform 0..max_view_trim of its length)
+  /// shrunk by 5 % (2.5 % at each end). Outliers are split too. Default false.
+  bool residual_split = false;
+  /// Residual split: largest share of a segment one camera misses at each end, [0, 0.45].
+  double max_view_trim = 0.25;
   /// Metres added to x and y of everything (segments, viewpoints, mesh, planes) to mimic
   /// georeferenced coordinates; |offset| <= 1e7. The scene's world_from_local stays identity.
   double offset = 0.0;

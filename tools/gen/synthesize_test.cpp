@@ -1,5 +1,6 @@
 #include "tools/gen/synthesize.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -189,7 +190,7 @@ TEST(Synthesize, OutlierFractionGivesThatShareOfSegments) {
 }
 
 TEST(Synthesize, SameSeedGivesIdenticalBytesOtherSeedDiffers) {
-  for (const char* family : {"cube", "house", "room", "city"}) {
+  for (const char* family : {"cube", "house", "lshape", "room", "floor", "city"}) {
     SynthSpec spec;
     spec.family = family;
     spec.seed = 11;
@@ -398,6 +399,94 @@ TEST(Synthesize, MetaJsonIsDeterministicAndListsEverySegment) {
   for (std::size_t pos = meta.find("\"kind\""); pos != std::string::npos; pos = meta.find("\"kind\"", pos + 1)) ++kinds;
   EXPECT_EQ(kinds, s.scene.segments.size());
   EXPECT_NE(meta.find("\"family\": \"room\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linesurf::synth
+
+namespace linesurf::synth {
+namespace {
+
+TEST(Synthesize, LShapeIsAClosedPrismWithVisibleLines) {
+  const SyntheticScene s = Make(Family("lshape"));
+  ExpectValidSolid(s, 1);
+  EXPECT_NEAR(s.ground_truth_volume, 1099.0, 1e-9);
+  EXPECT_EQ(s.true_planes.size(), 8u);
+  ExpectSegmentsOnTheirPlanes(s);
+  // The reflex corner's vertical edge is a sharp edge too.
+  EXPECT_GE(std::count(s.kinds.begin(), s.kinds.end(), SegmentKind::kStructural), 18);
+}
+
+TEST(Synthesize, FloorIsAShellOfThreeRoomsSeenFromInside) {
+  const SyntheticScene s = Make(Family("floor"));
+  ExpectValidSolid(s, 2);  // outer surface + the rooms' inner surface (joined by the doors)
+  const double expected = 10.6 * 8.6 * 3.4 - 4 * 8 * 2.8 - 5.85 * 4 * 2.8 - 5.85 * 3.85 * 2.8 -
+                          3 * 0.15 * 1.0 * 2.1 - 0.2 * 2.0 * 1.2 - 2.5 * 0.2 * 1.0 -
+                          0.2 * 1.5 * 1.0;
+  EXPECT_NEAR(s.ground_truth_volume, expected, 1e-9);
+  EXPECT_TRUE(s.interior);
+  ExpectSegmentsOnTheirPlanes(s);
+  // Every room is seen: some segment with a view from each room's first viewpoint (ids 0, 6, 12).
+  for (std::uint32_t first : {0u, 6u, 12u}) {
+    bool seen = false;
+    for (ViewpointId v : s.scene.observations.items()) seen = seen || v.value() == first;
+    EXPECT_TRUE(seen) << "viewpoint " << first;
+  }
+}
+
+TEST(Synthesize, ResidualSplitGivesOneSubSegmentPerObservationOnItsLine) {
+  SynthSpec spec = Family("house");
+  spec.noise_sigma = 0.01;
+  spec.outlier_fraction = 0.05;
+  const SyntheticScene whole = Make(spec);
+  spec.residual_split = true;
+  const SyntheticScene split = Make(spec);
+  ASSERT_EQ(split.scene.NumSegments(), whole.scene.observations.NumItems());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < whole.scene.NumSegments(); ++i) {
+    const Segment3& parent = whole.scene.segments[SegmentId(i)];
+    const Vec3 dir = (parent.p2 - parent.p1).normalized();
+    for (ViewpointId v : whole.scene.observations[SegmentId(i)]) {
+      const SegmentId s(k++);
+      ASSERT_EQ(split.scene.observations[s].size(), 1u);
+      EXPECT_EQ(split.scene.observations[s][0], v);
+      EXPECT_EQ(split.kinds[s.index()], whole.kinds[i]);
+      EXPECT_EQ(split.scene.memberships[s].count, whole.scene.memberships[SegmentId(i)].count);
+      const Segment3& part = split.scene.segments[s];
+      for (const Vec3& p : {part.p1, part.p2}) {  // on the parent, inside it, shrunk
+        const double t = (p - parent.p1).dot(dir);
+        EXPECT_LT(((p - parent.p1) - t * dir).norm(), 1e-9);
+        EXPECT_GT(t, 0.0);
+        EXPECT_LT(t, parent.Length());
+      }
+      EXPECT_LE(part.Length(), 0.95 * parent.Length() + 1e-12);
+      EXPECT_GE(part.Length(), 0.95 * (1.0 - 2.0 * spec.max_view_trim) * parent.Length() - 1e-12);
+    }
+  }
+}
+
+TEST(Synthesize, Line3DppLikeModelsKeepTheSceneValid) {
+  SynthSpec spec = Family("house");
+  spec.noise_sigma = 0.02;
+  spec.noise_model = NoiseModel::kDepth;
+  spec.outlier_model = OutlierModel::kNear;
+  spec.outlier_fraction = 0.07;
+  const SyntheticScene s = Make(spec);
+  std::size_t outliers = 0;
+  for (std::size_t i = 0; i < s.scene.NumSegments(); ++i) {
+    if (s.kinds[i] != SegmentKind::kOutlier) continue;
+    ++outliers;
+    EXPECT_FALSE(s.scene.observations[SegmentId(i)].empty());
+    EXPECT_EQ(s.scene.memberships[SegmentId(i)].count, 0);
+  }
+  EXPECT_NEAR(static_cast<double>(outliers) / s.scene.NumSegments(), 0.07, 0.01);
+  // Near outliers stay near the house (within its box grown by the largest shift and length).
+  for (std::size_t i = 0; i < s.scene.NumSegments(); ++i) {
+    const Vec3 m = s.scene.segments[SegmentId(i)].Midpoint();
+    EXPECT_LT(std::abs(m.x()), 7.0);
+    EXPECT_LT(std::abs(m.y()), 6.0);
+  }
+  EXPECT_EQ(Serialize(s), Serialize(Make(spec)));
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ const char* const kStage = "write_synthetic_meta";
 nlohmann::json ToJson(const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
 const char* NoiseModelName(NoiseModel m) {
-  return m == NoiseModel::kGaussian ? "gaussian" : "uniform_ball";
+  return m == NoiseModel::kGaussian ? "gaussian" : m == NoiseModel::kDepth ? "depth" : "uniform_ball";
 }
 
 }  // namespace
@@ -30,11 +30,14 @@ std::string SyntheticMetaJson(const SyntheticScene& s) {
   js["size"] = spec.size;
   js["noise_sigma"] = spec.noise_sigma;
   js["noise_model"] = NoiseModelName(spec.noise_model);
+  js["outlier_model"] = spec.outlier_model == OutlierModel::kNear ? "near" : "uniform";
   js["outlier_fraction"] = spec.outlier_fraction;
   js["outlier_count"] = spec.outlier_count ? nlohmann::ordered_json(*spec.outlier_count) : nullptr;
   js["max_pieces"] = spec.max_pieces ? nlohmann::ordered_json(*spec.max_pieces) : nullptr;
   js["max_trim"] = spec.max_trim ? nlohmann::ordered_json(*spec.max_trim) : nullptr;
   js["max_views"] = spec.max_views;
+  js["residual_split"] = spec.residual_split;
+  js["max_view_trim"] = spec.max_view_trim;
   js["offset"] = spec.offset;
   j["spec"] = js;
   j["interior"] = s.interior;
