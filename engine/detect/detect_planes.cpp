@@ -1,4 +1,5 @@
 #include "engine/detect/detect_planes.h"
+#include "engine/detect/estimate_epsilon.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -52,7 +53,7 @@ Status Invalid(const std::string& field, const std::string& range) {
 }  // namespace
 
 Status PlaneDetectionOptions::Validate() const {
-  if (!(epsilon > 0.0) || !std::isfinite(epsilon)) return Invalid("epsilon", "> 0");
+  if (epsilon && (!(*epsilon > 0.0) || !std::isfinite(*epsilon))) return Invalid("epsilon", "> 0");
   if (relative_epsilon && !(*relative_epsilon > 0.0 && *relative_epsilon < 0.5)) {
     return Invalid("relative_epsilon", "in (0, 0.5)");
   }
@@ -535,15 +536,6 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
   return planes;
 }
 
-double SceneDiagonal(const Scene& scene) {
-  Box3 box;
-  for (const Segment3& s : scene.segments) {
-    box.Extend(s.p1);
-    box.Extend(s.p2);
-  }
-  return box.IsEmpty() ? 0.0 : box.Extent().norm();
-}
-
 }  // namespace
 }  // namespace detect
 
@@ -567,13 +559,11 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                         "segment " << i << " has a non-finite endpoint");
     }
     PlaneDetectionResult result;
-    double epsilon = options.epsilon;
-    if (options.relative_epsilon) {
-      epsilon = *options.relative_epsilon * detect::SceneDiagonal(scene);
-      LINESURF_THROW_IF(!(epsilon > 0.0), kDegenerate, kStage,
-                        "relative_epsilon needs a scene of non-zero extent");
-    }
+    Expected<EpsilonEstimate> resolved = ResolveEpsilon(scene, options, ctx);
+    if (!resolved) throw LinesurfException(resolved.error());
+    const double epsilon = resolved->epsilon;
     result.stats.epsilon = epsilon;
+    result.stats.epsilon_estimate = std::move(*resolved);
     const detect::CollinearGroups groups = detect::LinesToDetect(scene, options, epsilon);
     const std::span<const Segment3> lines = groups.lines;
     result.stats.lines = static_cast<std::int64_t>(lines.size());

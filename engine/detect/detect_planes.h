@@ -23,10 +23,12 @@ enum class SegmentDistance {
 
 /// Parameters of DetectPlanes. Lengths are in scene units (metres for metric scenes).
 struct PlaneDetectionOptions {
-  /// Inlier tolerance eps (scene units, > 0). Paper: 2 cm on metric scenes.
-  double epsilon = 0.02;
-  /// If set, eps = relative_epsilon x (scene bounding-box diagonal) instead of `epsilon`; for SfM
-  /// data in arbitrary units. Range (0, 0.5).
+  /// Inlier tolerance eps (scene units, > 0). Unset (default, `--epsilon auto`): estimated from
+  /// the data (estimate_epsilon.h), so metric scenes, SfM units and noisier clouds need no flag.
+  /// Paper: 2 cm on metric scenes.
+  std::optional<double> epsilon;
+  /// If set, eps = relative_epsilon x (scene bounding-box diagonal) instead of `epsilon`. Range
+  /// (0, 0.5).
   std::optional<double> relative_epsilon;
   /// Fusion thickness eps_fus as a multiple of eps (paper: 3).
   double epsilon_fusion_factor = 3.0;
@@ -111,6 +113,19 @@ struct PlaneSupport {
   std::vector<SegmentId> inliers;  ///< ascending
 };
 
+/// Where the eps of a run came from.
+struct EpsilonEstimate {
+  double epsilon = 0.0;  ///< scene units
+  /// "given" (PlaneDetectionOptions::epsilon), "relative" (x scene diagonal), "planes" (residuals
+  /// of the scene's own planes) or "probe" (residuals of probe detections).
+  std::string source;
+  /// Robust noise scale 1.4826 x median |endpoint-to-plane distance| (0 unless estimated).
+  double noise_scale = 0.0;
+  double initial_epsilon = 0.0;  ///< eps_0 of the probes (0 unless probed)
+  int rounds = 0;                ///< probe detections run
+  std::size_t residuals = 0;     ///< endpoint distances the scale was taken from
+};
+
 struct PlaneDetectionStats {
   std::int32_t planes_before_fusion = 0;
   std::int32_t planes_after_fusion = 0;
@@ -130,6 +145,7 @@ struct PlaneDetectionStats {
   /// Blocks whose RANSAC stopped because it reached max_planes (planes may be missing there).
   std::int64_t capped_blocks = 0;
   double epsilon = 0.0;  ///< the eps actually used (scene units)
+  EpsilonEstimate epsilon_estimate;  ///< how it was chosen
   double seconds = 0.0;
   double seconds_fusion = 0.0;
 };

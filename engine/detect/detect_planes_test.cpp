@@ -264,7 +264,7 @@ TEST(DetectPlanes, PerBlockDetectionFindsEveryCubeFaceAndKeepsTheAtMostTwoRule) 
         bool found = false;
         for (const Plane3& plane : r.planes) {
           found = found || (std::abs(plane.normal[axis]) > min_cos &&
-                            std::abs(plane.SignedDistance(on_face)) < 2.0 * o.epsilon);
+                            std::abs(plane.SignedDistance(on_face)) < 2.0 * r.stats.epsilon);
         }
         faces += found ? 1 : 0;
       }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "engine/core/exception.h"
+#include "engine/detect/estimate_epsilon.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_surface.h"
@@ -76,6 +77,7 @@ Status ReconstructOptions::Validate() const {
   if (Status s = energy.Validate(); !s) return s;
   if (Status s = solver.Validate(); !s) return s;
   if (Status s = complex.Validate(); !s) return s;
+  if (Status s = quality.Validate(); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
                  "box_margin must be in (0, 10]"};
@@ -115,6 +117,7 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
       stats.input_segments = sane.stats.input_segments;
       stage_ctx.ThrowIfCancelled(kStage);
       timer.Start("detect");  // nothing to detect: the report lists the same stages either way
+      stats.epsilon = Take(ResolveEpsilon(scene, options.planes, stage_ctx));
     } else {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
@@ -126,6 +129,7 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
       facts.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
       stats.capped_blocks = static_cast<std::size_t>(detected.detection_stats.capped_blocks);
       facts.detection_epsilon = detected.detection_stats.epsilon;
+      stats.epsilon = std::move(detected.detection_stats.epsilon_estimate);
     }
     result.world_from_local = scene.world_from_local;
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
@@ -165,6 +169,12 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     ExtractResult surface = Take(ExtractSurface(cx, labeling.labels, extract));
     result.mesh = std::move(surface.mesh);
     const IndexTopology topology = CheckIndexTopology(result.mesh);
+    if (options.measure_quality && result.mesh.NumFaces() > 0) {
+      timer.Start("quality");
+      stats.quality = Take(MeasureSurfaceQuality(result.mesh, scene, stats.epsilon.epsilon,
+                                                 options.quality, stage_ctx));
+      stats.quality_measured = true;
+    }
     for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
     timer.Stop();
 

@@ -17,6 +17,7 @@
 #include "engine/detect/detect_planes.h"
 #include "engine/pipeline/compute_evidence.h"
 #include "engine/pipeline/sanitize_scene.h"
+#include "engine/pipeline/surface_quality.h"
 #include "linesurf/error.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "solver/lp/lp_backend.h"
@@ -48,6 +49,10 @@ struct ReconstructOptions {
   /// fraction of its extent along that axis (at least this fraction of its diagonal). Range
   /// (0, 10]. Default 0.05, as the reference, so viewpoints lie in bounded cells.
   double box_margin = 0.05;
+  /// Measure the surface against the segments (surface_quality.h) and report it in
+  /// RunStats::quality. Default true.
+  bool measure_quality = true;
+  SurfaceQualityOptions quality;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
   /// Worker threads: 0 = automatic, 1 = serial. Results do not depend on it.
@@ -70,6 +75,8 @@ struct RunStats {
   std::size_t observations = 0;
   std::size_t planes = 0;
   std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes
+  /// The eps of detection (or, with given planes, of the quality figures) and how it was chosen.
+  EpsilonEstimate epsilon;
   std::size_t segments_with_planes[3] = {0, 0, 0};  ///< on 0, 1, 2 planes
   std::size_t planes_in_complex = 0;                ///< planes that split the box
   std::size_t cells = 0;
@@ -104,6 +111,9 @@ struct RunStats {
   bool mesh_manifold = false;
   double mesh_volume = 0.0;  ///< signed, positive when outward (exterior)
   std::size_t split_vertices = 0;
+  /// Figures without ground truth (local frame; valid when quality_measured).
+  SurfaceQuality quality;
+  bool quality_measured = false;
   std::size_t peak_memory_bytes = 0;  ///< process peak RSS at the end of the run
 };
 

@@ -80,7 +80,7 @@ int Robustness(int exhaustive_max, synth::NoiseModel model, int trials, bool nea
             return 1;
           }
           total += near ? eval::EvaluatePlaneRecovery(cube->scene, r->planes, 5.0,
-                                                      2.0 * options.epsilon, 1)
+                                                      2.0 * r->stats.epsilon, 1)
                               .found
                         : eval::CountTruePlanesHeld(cube->scene, r->memberships);
         }
@@ -248,7 +248,7 @@ int Andalusian(const char* path, int threads, int argc, char** argv) {
                    pl.normal.x(), pl.normal.y(), pl.normal.z(), pl.Offset());
     }
   }
-  PrintMatching(scene, r->planes, options.epsilon, "reference");
+  PrintMatching(scene, r->planes, r->stats.epsilon, "reference");
   // Calibration: the same detector with the next seed, matched against this run's planes.
   PlaneDetectionOptions next = options;
   ++next.seed;
@@ -263,7 +263,7 @@ int Andalusian(const char* path, int threads, int argc, char** argv) {
   std::printf("\nThe same detector with seed %llu matched against this run (seed %llu):\n",
               static_cast<unsigned long long>(next.seed),
               static_cast<unsigned long long>(options.seed));
-  PrintMatching(ours, other->planes, options.epsilon, "our");
+  PrintMatching(ours, other->planes, r->stats.epsilon, "our");
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -142,6 +143,55 @@ TEST(Reconstruct, MissingGivenPlanesIsInvalidInput) {
   auto r = pipeline::Reconstruct(s.scene, Options(pipeline::SceneMode::kExterior), ctx);
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error().code, ErrorCode::kInvalidInput);
+}
+
+TEST(Reconstruct, ReportsQualityWithoutGroundTruth) {
+  const synth::SyntheticScene s = Make("house");
+  const pipeline::ReconstructResult r = RunReconstruct(s.scene, Options(pipeline::SceneMode::kExterior));
+  ASSERT_TRUE(r.stats.quality_measured);
+  const pipeline::SurfaceQuality& q = r.stats.quality;
+  EXPECT_EQ(r.stats.epsilon.source, "planes");  // auto eps from the given planes' residuals
+  EXPECT_NEAR(r.stats.epsilon.noise_scale, 0.01, 0.003);  // the 1 cm of synth noise
+  EXPECT_GE(q.data_fit, 0.99);
+  EXPECT_GE(q.visibility_consistency, 0.95);
+  EXPECT_EQ(q.components.size(), 1u);
+  EXPECT_EQ(q.floating_fragments, 0u);
+  EXPECT_NEAR(q.enclosed_volume, 600.0, 6.0);
+}
+
+/// The scene with every length multiplied by `scale` (about the origin).
+Scene Scaled(Scene scene, double scale) {
+  for (Segment3& s : scene.segments) {
+    s.p1 *= scale;
+    s.p2 *= scale;
+  }
+  for (Vec3& v : scene.viewpoints) v *= scale;
+  for (Plane3& p : scene.planes) p.point *= scale;
+  return scene;
+}
+
+TEST(Reconstruct, SceneInOtherUnitsGivesTheSameMeshScaled) {
+  // Must-show 4 of issue 11: metres and the same scene x 37.1 (SfM units), default options
+  // (eps auto, planes detected).
+  constexpr double kScale = 37.1;
+  const synth::SyntheticScene s = Make("house");
+  pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kAuto);
+  o.use_given_planes = false;
+  const pipeline::ReconstructResult metres = RunReconstruct(s.scene, o);
+  const pipeline::ReconstructResult scaled = RunReconstruct(Scaled(s.scene, kScale), o);
+  EXPECT_EQ(metres.stats.epsilon.source, "probe");
+  EXPECT_NEAR(scaled.stats.epsilon.epsilon, kScale * metres.stats.epsilon.epsilon,
+              1e-9 * kScale * metres.stats.epsilon.epsilon);
+  EXPECT_EQ(scaled.stats.planes, metres.stats.planes);
+  ASSERT_EQ(scaled.mesh.NumFaces(), metres.mesh.NumFaces());
+  ASSERT_EQ(scaled.mesh.vertices.size(), metres.mesh.vertices.size());
+  EXPECT_EQ(scaled.mesh.face_indices, metres.mesh.face_indices);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < metres.mesh.vertices.size(); ++i) {
+    worst = std::max(worst, (scaled.mesh.vertices[i] - kScale * metres.mesh.vertices[i]).norm());
+  }
+  EXPECT_LE(worst, 1e-9 * kScale * 20.0) << "largest vertex difference, scaled units";
+  ASSERT_GT(metres.mesh.NumFaces(), 0u);
 }
 
 }  // namespace

@@ -41,6 +41,7 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
   j["stats"] = {{"segments", r.scene.segments.size()},
                 {"lines", st.lines},
                 {"epsilon", st.epsilon},
+                {"epsilon_estimate", EpsilonJson(st.epsilon_estimate)},
                 {"blocks", st.blocks},
                 {"planes_before_fusion", st.planes_before_fusion},
                 {"planes", st.planes_after_fusion},
@@ -127,7 +128,8 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
                  "detect: %zu segments, eps %.6g%s; %d planes (%d before fusion, %d merges)%s\n"
                  "detect: segments on 0/1/2 planes: %lld / %lld / %lld; %lld candidates, %lld "
                  "failed draws; %.3f s (fusion %.3f s)\n",
-                 scene.segments.size(), st.epsilon, args.options.relative_epsilon ? " (relative)" : "",
+                 scene.segments.size(), st.epsilon,
+                 (" (" + st.epsilon_estimate.source + ")").c_str(),
                  st.planes_after_fusion, st.planes_before_fusion, st.merges,
                  given_planes ? " (given planes ignored)" : "", static_cast<long long>(st.num_l0),
                  static_cast<long long>(st.num_l1), static_cast<long long>(st.num_l2),

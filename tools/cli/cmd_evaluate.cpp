@@ -1,9 +1,16 @@
-// `linesurf evaluate RESULT GT`: precision/completeness against a ground-truth mesh, topology.
+// `linesurf evaluate RESULT [GT] [--lines INPUT]`: precision/completeness against a ground-truth
+// mesh and topology; figures without ground truth against the input segments.
 
+#include "engine/detect/estimate_epsilon.h"
 #include "engine/io/mesh_io.h"
+#include "engine/io/read_scene.h"
 #include "engine/io/reference_json.h"
+#include "engine/pipeline/sanitize_scene.h"
+#include "engine/pipeline/surface_quality.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/surface_quality_json.h"
 #include "tools/eval/evaluate_mesh.h"
 
 #include <chrono>
@@ -24,14 +31,43 @@ struct EvaluateArgs {
   std::string gt_path;
   std::string visible_from;
   std::string json_path;
+  std::string lines_path;
+  PlaneDetectionOptions detection;  // eps (auto by default), planes when the input has none
   EvaluationOptions options;
 };
+
+/// Figures without ground truth of the mesh against the segments of `args.lines_path`: its
+/// planes and memberships, or detected ones when it has none. Mesh and scene go to the local
+/// frame of the sanitised scene.
+Expected<pipeline::SurfaceQuality> QualityAgainstLines(const CommonOptions& common,
+                                                       const EvaluateArgs& args,
+                                                       PolygonMesh mesh, RunContext& ctx) {
+  Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.lines_path, {});
+  if (!read) return read.error();
+  for (const std::string& w : read->warnings) PrintWarning(common, w);
+  const bool given = !read->scene.planes.empty() && read->scene.HasMemberships();
+  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(read->scene), {});
+  if (!sane) return sane.error();
+  Scene scene = std::move(sane->scene);
+  if (!given) {
+    scene.planes.clear();
+    scene.memberships.clear();
+    Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.detection, ctx);
+    if (!detected) return detected.error();
+    scene.planes = std::move(detected->planes);
+    scene.memberships = std::move(detected->memberships);
+  }
+  Expected<EpsilonEstimate> eps = ResolveEpsilon(scene, args.detection, ctx);
+  if (!eps) return eps.error();
+  for (Vec3& v : mesh.vertices) v = scene.world_from_local.ApplyInverse(v);
+  return pipeline::MeasureSurfaceQuality(mesh, scene, eps->epsilon, {}, ctx);
+}
 
 nlohmann::json StatsJson(const DistanceStats& s) {
   return {{"count", s.count}, {"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"max", s.max}};
 }
 
-nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r, double seconds) {
+nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r) {
   const MeshTopology& t = r.topology;
   return {{"result", args.result_path},
           {"ground_truth", args.gt_path},
@@ -61,8 +97,7 @@ nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r, doubl
             {"num_non_manifold_edges", t.num_non_manifold_edges},
             {"num_non_manifold_vertices", t.num_non_manifold_vertices},
             {"num_degenerate_faces", t.num_degenerate_faces},
-            {"signed_volume", t.signed_volume}}},
-          {"seconds", seconds}};
+            {"signed_volume", t.signed_volume}}}};
 }
 
 void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
@@ -98,10 +133,16 @@ void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
 
 int Run(const CommonOptions& common, const EvaluateArgs& args) {
   if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
+  if (args.gt_path.empty() && args.lines_path.empty()) {
+    std::fprintf(stderr,
+                 "linesurf: error: evaluate needs a ground-truth mesh GT, --lines, or both\n");
+    return kExitUsage;
+  }
   OutputFiles files("evaluate");
   files.AddInput(args.result_path);
   files.AddInput(args.gt_path);
   files.AddInput(args.visible_from);
+  files.AddInput(args.lines_path);
   const bool json_file = !args.json_path.empty() && args.json_path != "-";
   if (json_file) files.AddOutput("--json", args.json_path, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
@@ -110,27 +151,44 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
   const auto start = std::chrono::steady_clock::now();
   auto result_mesh = io::ReadMesh(args.result_path);
   if (!result_mesh) return ReportError(result_mesh.error());
-  auto gt_mesh = io::ReadMesh(args.gt_path);
-  if (!gt_mesh) return ReportError(gt_mesh.error());
-  std::optional<std::vector<Vec3>> viewpoints;
-  if (!args.visible_from.empty()) {
-    auto scene = io::ReadReferenceJson(args.visible_from);
-    if (!scene) return ReportError(scene.error());
-    viewpoints.emplace();
-    for (const Vec3& v : scene->viewpoints) viewpoints->push_back(scene->world_from_local.Apply(v));
-    if (viewpoints->empty()) {
-      return ReportError(Error{ErrorCode::kInvalidInput, "evaluate",
-                               args.visible_from + " holds no viewpoints"});
+  nlohmann::json json = {{"result", args.result_path}};
+  const bool table = args.json_path != "-";
+  if (!args.gt_path.empty()) {
+    auto gt_mesh = io::ReadMesh(args.gt_path);
+    if (!gt_mesh) return ReportError(gt_mesh.error());
+    std::optional<std::vector<Vec3>> viewpoints;
+    if (!args.visible_from.empty()) {
+      auto scene = io::ReadReferenceJson(args.visible_from);
+      if (!scene) return ReportError(scene.error());
+      viewpoints.emplace();
+      for (const Vec3& v : scene->viewpoints) {
+        viewpoints->push_back(scene->world_from_local.Apply(v));
+      }
+      if (viewpoints->empty()) {
+        return ReportError(Error{ErrorCode::kInvalidInput, "evaluate",
+                                 args.visible_from + " holds no viewpoints"});
+      }
     }
+    auto result = EvaluateMesh(*result_mesh, *gt_mesh, args.options, viewpoints, &ctx);
+    if (!result) return ReportError(result.error());
+    if (table) PrintTable(args, *result);
+    json = ToJson(args, *result);
   }
-  auto result = EvaluateMesh(*result_mesh, *gt_mesh, args.options, viewpoints, &ctx);
-  if (!result) return ReportError(result.error());
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (args.json_path != "-") PrintTable(args, *result);
-  if (args.json_path == "-") std::cout << ToJson(args, *result, seconds).dump(2) << "\n";
+  if (!args.lines_path.empty()) {
+    Expected<pipeline::SurfaceQuality> quality =
+        QualityAgainstLines(common, args, *result_mesh, ctx);
+    if (!quality) return ReportError(quality.error());
+    if (table) {
+      std::printf("%s\nagainst the segments of %s (eps %.6g):\n%s",
+                  args.gt_path.empty() ? "" : "\n", args.lines_path.c_str(), quality->epsilon,
+                  SurfaceQualitySummary(*quality, "  ").c_str());
+    }
+    json["lines"] = args.lines_path;
+    json["quality"] = SurfaceQualityJson(*quality);
+  }
+  json["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (args.json_path == "-") std::cout << json.dump(2) << "\n";
   if (json_file) {
-    const nlohmann::json json = ToJson(args, *result, seconds);
     if (Status s = files.Write(
             args.json_path, [&](const auto& path) { return WriteReport(path, json, "evaluate"); });
         !s) {
@@ -150,10 +208,21 @@ Command AddEvaluateCommand(CLI::App& app, CommonOptions& common) {
       "evaluate",
       "Compare a mesh with a ground-truth mesh: precision (share of result samples near the ground "
       "truth), completeness (share of ground-truth samples near the result), distances and "
-      "topology checks");
+      "topology checks; or, with --lines, with its input segments (no ground truth needed)");
   cmd.app->add_option("RESULT", args->result_path, "Reconstructed mesh (.ply, .obj, .off)")
       ->required();
-  cmd.app->add_option("GT", args->gt_path, "Ground-truth mesh (.ply, .obj, .off)")->required();
+  cmd.app->add_option(
+      "GT", args->gt_path, "Ground-truth mesh (.ply, .obj, .off); optional with --lines");
+  cmd.app->add_option("--lines",
+                      args->lines_path,
+                      "Input segments (any scene format): figures without ground truth (data fit, "
+                      "visibility consistency, components, floating fragments, planes on no face), "
+                      "with the input's planes or, when it has none, detected ones");
+  cmd.app
+      ->add_option("--epsilon",
+                   args->detection.epsilon,
+                   "eps of the figures, scene units (unset: auto, estimated from the data)")
+      ->check(CLI::PositiveNumber);
   cmd.app->add_option(
       "--visible-from",
       args->visible_from,

@@ -9,6 +9,7 @@
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
+#include "tools/cli/surface_quality_json.h"
 #include "tools/eval/mesh_topology.h"
 
 #include <cmath>
@@ -68,6 +69,8 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;
   j["sigma"] = s.sigma;
+  j["epsilon"] = EpsilonJson(s.epsilon);
+  if (s.quality_measured) j["quality"] = SurfaceQualityJson(s.quality);
   // A lower bound of -infinity (none known) and its gap are null.
   const bool bounded = std::isfinite(s.lower_bound);
   j["solver"] = {{"backend", s.solver_backend},
@@ -146,6 +149,11 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
                  s.lp_constraints, s.solver_backend.c_str(), s.solver_status.c_str(),
                  s.mesh_vertices, s.mesh_faces, s.mesh_closed ? "closed" : "NOT closed",
                  s.mesh_manifold ? "2-manifold" : "NOT 2-manifold", s.total_seconds);
+    std::fprintf(stderr, "reconstruct: eps %.6g (%s)\n", s.epsilon.epsilon,
+                 s.epsilon.source.c_str());
+    if (s.quality_measured) {
+      std::fputs(SurfaceQualitySummary(s.quality, "reconstruct: ").c_str(), stderr);
+    }
   }
   return kExitOk;
 }
@@ -190,6 +198,10 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.AddFlag("cityjson", args->cityjson,
             "Write CityJSON whatever the output extension (one Building per connected part)");
   r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
+  r.AddFlag("quality",
+            o.measure_quality,
+            "Figures without ground truth in the report (data fit, visibility, components; "
+            "--quality=false skips them)");
   RegisterDetectionOptions(r, o.planes);
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;

@@ -3,8 +3,16 @@
 namespace linesurf::cli {
 
 void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& options) {
-  registry.Add("epsilon", options.epsilon, "Inlier tolerance eps, scene units")
+  registry
+      .Add("epsilon",
+           options.epsilon,
+           "Inlier tolerance eps, scene units (unset: auto, estimated from the data)")
       ->check(CLI::PositiveNumber);
+  registry
+      .Add("epsilon-over-noise",
+           options.epsilon_over_noise,
+           "eps auto: eps = this x the robust noise scale of the plane residuals")
+      ->check(CLI::Range(1e-9, 20.0));
   registry.Add("relative-epsilon",
                options.relative_epsilon,
                "eps as a fraction of the scene diagonal (overrides --epsilon)");
@@ -31,6 +39,19 @@ void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& o
            options.block_max_segments,
            "Split a block with more lines than this into 8, recursively (0 = never)")
       ->check(CLI::NonNegativeNumber);
+}
+
+}  // namespace linesurf::cli
+
+namespace linesurf::cli {
+
+nlohmann::json EpsilonJson(const EpsilonEstimate& e) {
+  return {{"epsilon", e.epsilon},
+          {"source", e.source},
+          {"noise_scale", e.noise_scale},
+          {"initial_epsilon", e.initial_epsilon},
+          {"rounds", e.rounds},
+          {"residuals", e.residuals}};
 }
 
 }  // namespace linesurf::cli

@@ -4,11 +4,16 @@
 #include "engine/detect/detect_planes.h"
 #include "tools/cli/option_registry.h"
 
+#include <nlohmann/json.hpp>
+
 namespace linesurf::cli {
 
 /// Registers --epsilon, --relative-epsilon, --iterations, --max-planes, --min-support,
 /// --collinear-tolerance, --block-size, --block-halo and --block-max-segments, writing into
 /// `options` (the seed is the command's --seed).
 void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& options);
+
+/// How eps was chosen, as written in run reports.
+nlohmann::json EpsilonJson(const EpsilonEstimate& estimate);
 
 }  // namespace linesurf::cli

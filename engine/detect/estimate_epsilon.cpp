@@ -1,0 +1,178 @@
+#include "engine/detect/estimate_epsilon.h"
+
+#include "engine/core/exception.h"
+#include "engine/detect/collinear_groups.h"
+#include "engine/detect/segment_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <vector>
+
+namespace linesurf {
+namespace {
+
+constexpr const char* kStage = "estimate_epsilon";
+/// eps_0 of the first probe, as a fraction of the median segment length: 2 cm on the ~1 m
+/// segments of metric scenes (the paper's default), 0.019 on Andalusian.
+constexpr double kInitialOverMedianLength = 0.02;
+/// The estimate stays within [eps_0 / 8, 8 eps_0]: noise-free data would otherwise drive eps to
+/// zero, and a probe that merged everything would blow it up.
+constexpr double kMaxChange = 8.0;
+/// Probes stop when eps changes by less than this fraction, or after kMaxRounds.
+constexpr double kConvergence = 0.1;
+constexpr int kMaxRounds = 6;
+/// A probe only needs the largest planes.
+constexpr std::int32_t kProbePlanes = 24;
+/// Parts of one line: every endpoint within this fraction of the median segment length of the
+/// other's line (the reference's split and ours leave them collinear to rounding).
+constexpr double kCollinearPartsOverMedianLength = 1e-5;
+/// Planes with fewer distinct lines do not give residuals (see ScaleOfResiduals).
+constexpr std::size_t kMinLinesForScale = 6;
+/// 1 / Phi^-1(3/4): median absolute deviation -> standard deviation of a Gaussian.
+constexpr double kMadToSigma = 1.482602218505602;
+
+double SceneDiagonal(const Scene& scene) {
+  Box3 box;
+  for (const Segment3& s : scene.segments) {
+    box.Extend(s.p1);
+    box.Extend(s.p2);
+  }
+  return box.IsEmpty() ? 0.0 : box.Extent().norm();
+}
+
+double MedianLength(const Scene& scene) {
+  std::vector<double> lengths;
+  lengths.reserve(scene.NumSegments());
+  for (const Segment3& s : scene.segments) {
+    const double l = s.Length();
+    if (std::isfinite(l) && l > 0.0) lengths.push_back(l);
+  }
+  if (lengths.empty()) return 0.0;
+  const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), mid, lengths.end());
+  return *mid;
+}
+
+/// Robust scale of the endpoint distances of every distinct line to each of its planes. The
+/// parts of one line (a residual split) count once, as the line itself: a line seen by 30
+/// cameras must not weigh 30 times. Only planes holding at least kMinLinesForScale lines count
+/// when there are such planes: a plane through two or three lines fits their noise and shows
+/// residuals near zero.
+EpsilonEstimate ScaleOfResiduals(const Scene& scene,
+                                 const IdVector<PlaneId, Plane3>& planes,
+                                 const IdVector<SegmentId, PlaneMembership>& memberships) {
+  EpsilonEstimate e;
+  const std::size_t n = std::min(memberships.size(), scene.NumSegments());
+  const double length = MedianLength(scene);
+  if (n == 0 || !(length > 0.0)) return e;
+  const detect::CollinearGroups groups =
+      detect::GroupCollinearSegments(std::span<const Segment3>(scene.segments.raw().data(), n),
+                                     kCollinearPartsOverMedianLength * length);
+  std::vector<SegmentId> lines;  // the first part of every line that lies on a plane
+  std::vector<std::size_t> lines_on_plane(planes.size(), 0);
+  for (std::size_t g = 0; g < groups.members.NumRows(); ++g) {
+    const SegmentId first = groups.members[SegmentId(g)].front();
+    const PlaneMembership& m = memberships[first];
+    bool on_plane = false;
+    for (std::uint8_t k = 0; k < m.count; ++k) {
+      if (m.planes[k].index() >= planes.size()) continue;
+      ++lines_on_plane[m.planes[k].index()];
+      on_plane = true;
+    }
+    if (on_plane) lines.push_back(first);
+  }
+  const bool any_large = std::any_of(lines_on_plane.begin(),
+                                     lines_on_plane.end(),
+                                     [](std::size_t c) { return c >= kMinLinesForScale; });
+  std::vector<double> d;
+  for (SegmentId s : lines) {
+    const PlaneMembership& m = memberships[s];
+    const Segment3& seg = scene.segments[s];
+    for (std::uint8_t k = 0; k < m.count; ++k) {
+      const std::size_t p = m.planes[k].index();
+      if (p >= planes.size() || (any_large && lines_on_plane[p] < kMinLinesForScale)) continue;
+      d.push_back(std::abs(planes[m.planes[k]].SignedDistance(seg.p1)));
+      d.push_back(std::abs(planes[m.planes[k]].SignedDistance(seg.p2)));
+    }
+  }
+  e.residuals = d.size();
+  if (d.empty()) return e;
+  const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
+  std::nth_element(d.begin(), mid, d.end());
+  e.noise_scale = kMadToSigma * *mid;
+  e.epsilon = kEpsilonOverNoise * e.noise_scale;
+  return e;
+}
+
+EpsilonEstimate Probe(const Scene& scene,
+                      const PlaneDetectionOptions& options,
+                      const RunContext& ctx) {
+  const double length = MedianLength(scene);
+  LINESURF_THROW_IF(!(length > 0.0),
+                    kDegenerate,
+                    kStage,
+                    "eps cannot be estimated: no segment of positive length");
+  const double eps0 = kInitialOverMedianLength * length;
+  PlaneDetectionOptions probe = options;
+  probe.relative_epsilon.reset();
+  probe.max_planes = std::min(options.max_planes, kProbePlanes);
+  double eps = eps0;
+  EpsilonEstimate out;
+  for (int round = 1; round <= kMaxRounds; ++round) {
+    probe.epsilon = eps;
+    Expected<PlaneDetectionResult> found = DetectPlanes(scene, probe, ctx);
+    if (!found) throw LinesurfException(found.error());
+    const EpsilonEstimate e = ScaleOfResiduals(scene, found->planes, found->memberships);
+    out.rounds = round;
+    out.residuals = e.residuals;
+    out.noise_scale = e.noise_scale;
+    if (e.residuals == 0) break;  // nothing coplanar at this eps: keep it
+    const double next = std::clamp(e.epsilon, eps0 / kMaxChange, eps0 * kMaxChange);
+    const bool converged = std::abs(next - eps) <= kConvergence * eps;
+    eps = next;
+    if (converged) break;
+  }
+  out.epsilon = eps;
+  out.initial_epsilon = eps0;
+  out.source = "probe";
+  return out;
+}
+
+}  // namespace
+
+EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene) {
+  EpsilonEstimate e = ScaleOfResiduals(scene, scene.planes, scene.memberships);
+  e.source = "planes";
+  return e;
+}
+
+Expected<EpsilonEstimate> ResolveEpsilon(const Scene& scene,
+                                         const PlaneDetectionOptions& options,
+                                         const RunContext& ctx) noexcept {
+  if (Status valid = options.Validate(); !valid) return valid.error();
+  return CatchAll(kStage, [&]() -> EpsilonEstimate {
+    EpsilonEstimate e;
+    if (options.relative_epsilon) {
+      e.epsilon = *options.relative_epsilon * SceneDiagonal(scene);
+      e.source = "relative";
+      LINESURF_THROW_IF(!(e.epsilon > 0.0),
+                        kDegenerate,
+                        kStage,
+                        "relative_epsilon needs a scene of non-zero extent");
+      return e;
+    }
+    if (options.epsilon) {
+      e.epsilon = *options.epsilon;
+      e.source = "given";
+      return e;
+    }
+    if (scene.HasMemberships()) {
+      e = EstimateEpsilonFromPlanes(scene);
+      if (e.epsilon > 0.0) return e;
+    }
+    return Probe(scene, options, ctx);
+  });
+}
+
+}  // namespace linesurf

@@ -1,0 +1,36 @@
+#pragma once
+/// @file estimate_epsilon.h
+/// @brief The inlier tolerance eps from the data (`--epsilon auto`, docs/plane_detection.md):
+/// eps = k x the robust scale of the endpoint-to-plane residuals of the segments' planes. With
+/// given planes and memberships the residuals are theirs; otherwise a few probe detections find
+/// the largest planes, starting from eps_0 = 2 % of the median segment length and re-detecting
+/// with the new eps until it changes by less than 10 %. Every quantity is a length ratio, so a
+/// scene scaled by s gets s x eps.
+
+#include "linesurf/error.h"
+
+#include "engine/core/run_context.h"
+#include "engine/core/scene.h"
+#include "engine/detect/detect_planes.h"
+
+namespace linesurf {
+
+/// eps = kEpsilonOverNoise x noise scale: the mean of two endpoint distances of a Gaussian
+/// N(0, s^2) segment stays under 2.5 s with probability ~99.9 %, its distance to a crease line
+/// with ~99 %.
+inline constexpr double kEpsilonOverNoise = 2.5;
+
+/// @brief Resolves the eps of `options` for `scene`: the given value, relative_epsilon x the
+/// scene diagonal, or (neither set) the estimate above: from the scene's planes and memberships
+/// when it has some with a non-zero residual scale, else from probe detections.
+/// @return kInvalidOptions, kDegenerate (a relative eps on a scene of zero extent), kCancelled.
+/// Deterministic for any thread count.
+[[nodiscard]] Expected<EpsilonEstimate> ResolveEpsilon(const Scene& scene,
+                                                       const PlaneDetectionOptions& options,
+                                                       const RunContext& ctx) noexcept;
+
+/// @brief The estimate from the scene's own planes and memberships (source "planes"); eps 0 and
+/// no residuals when the scene has none, or only exact data (noise scale 0).
+[[nodiscard]] EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene);
+
+}  // namespace linesurf

@@ -1,0 +1,337 @@
+#include "engine/pipeline/surface_quality.h"
+
+#include "engine/core/exception.h"
+#include "engine/core/parallel.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <Eigen/Geometry>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <numeric>
+#include <tuple>
+#include <utility>
+
+namespace linesurf::pipeline {
+namespace {
+
+constexpr const char* kStage = "surface_quality";
+/// Segments per parallel task; fixed so the chunking never depends on the thread count.
+constexpr std::size_t kSegmentGrain = 64;
+constexpr int kMaxSamplesPerSegment = 1024;
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangle = Kernel::Triangle_3;
+using TriangleIterator = std::vector<Triangle>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+Kernel::Point_3 ToPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+/// Union-find with path halving; the representative is the smallest index of a set.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  std::size_t Find(std::size_t i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void Join(std::size_t a, std::size_t b) {
+    a = Find(a);
+    b = Find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+/// The mesh as triangles (fan of each face, degenerate ones skipped), with the component of
+/// every face.
+struct MeshIndex {
+  std::vector<Triangle> triangles;
+  std::vector<std::uint32_t> triangle_face;
+  std::vector<std::uint32_t> face_component;
+  std::size_t num_components = 0;
+};
+
+void CheckIndices(const PolygonMesh& mesh) {
+  LINESURF_THROW_IF(
+      mesh.face_offsets.empty() || mesh.face_offsets.back() != mesh.face_indices.size(),
+      kInvalidInput,
+      kStage,
+      "mesh: face offsets do not cover the indices");
+  for (std::uint32_t v : mesh.face_indices) {
+    LINESURF_THROW_IF(v >= mesh.vertices.size(),
+                      kInvalidInput,
+                      kStage,
+                      "mesh: a face refers to vertex " << v << " of " << mesh.vertices.size());
+  }
+}
+
+/// Components: faces sharing a vertex, vertices at the bit-identical position being one.
+std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& count) {
+  const std::size_t nv = mesh.vertices.size();
+  DisjointSets sets(nv);
+  std::vector<std::size_t> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  const auto key = [&](std::size_t i) {
+    const Vec3& p = mesh.vertices[i];
+    return std::make_tuple(p.x(), p.y(), p.z());
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(key(a), a) < std::make_pair(key(b), b);
+  });
+  for (std::size_t k = 1; k < nv; ++k) {
+    if (key(order[k]) == key(order[k - 1])) sets.Join(order[k], order[k - 1]);
+  }
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    const auto face = mesh.Face(f);
+    for (std::size_t k = 1; k < face.size(); ++k) sets.Join(face[0], face[k]);
+  }
+  // Number components by their first face.
+  std::vector<std::uint32_t> id_of_root(nv, std::numeric_limits<std::uint32_t>::max());
+  std::vector<std::uint32_t> out(mesh.NumFaces());
+  count = 0;
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    const std::size_t root = sets.Find(mesh.Face(f)[0]);
+    if (id_of_root[root] == std::numeric_limits<std::uint32_t>::max()) {
+      id_of_root[root] = static_cast<std::uint32_t>(count++);
+    }
+    out[f] = id_of_root[root];
+  }
+  return out;
+}
+
+MeshIndex IndexMesh(const PolygonMesh& mesh) {
+  CheckIndices(mesh);
+  MeshIndex index;
+  index.face_component = FaceComponents(mesh, index.num_components);
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    const auto face = mesh.Face(f);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+      const Triangle t(ToPoint(mesh.vertices[face[0]]),
+                       ToPoint(mesh.vertices[face[k]]),
+                       ToPoint(mesh.vertices[face[k + 1]]));
+      if (t.is_degenerate()) continue;  // exact collinearity test; no area, never nearest
+      index.triangles.push_back(t);
+      index.triangle_face.push_back(static_cast<std::uint32_t>(f));
+    }
+  }
+  LINESURF_THROW_IF(
+      index.triangles.empty(), kInvalidInput, kStage, "mesh has no face with positive area");
+  return index;
+}
+
+/// What one segment contributes; summed over segments in id order.
+struct SegmentFigures {
+  double near_length = 0.0;
+  /// (component, sample length within the fit distance), one entry per near sample.
+  std::vector<std::pair<std::uint32_t, double>> near_by_component;
+  double sight_length = 0.0;
+  double clear_length = 0.0;
+};
+
+/// The sight ray eye -> p is clear unless it crosses a face whose plane lies farther than `fit`
+/// from p: a face the sample lies on (within the noise) does not hide it, even when a grazing ray
+/// meets that face well before the noisy sample.
+bool IsClear(const Vec3& eye,
+             const Vec3& p,
+             const Tree& tree,
+             double fit,
+             std::vector<TriangleIterator>& hits) {
+  hits.clear();
+  tree.all_intersected_primitives(Kernel::Segment_3(ToPoint(eye), ToPoint(p)),
+                                  std::back_inserter(hits));
+  for (const TriangleIterator& t : hits) {
+    const Vec3 a(t->vertex(0).x(), t->vertex(0).y(), t->vertex(0).z());
+    const Vec3 b(t->vertex(1).x(), t->vertex(1).y(), t->vertex(1).z());
+    const Vec3 c(t->vertex(2).x(), t->vertex(2).y(), t->vertex(2).z());
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    if (std::abs(n.dot(p - a)) > fit) return false;
+  }
+  return true;
+}
+
+SegmentFigures MeasureSegment(const Scene& scene,
+                              SegmentId s,
+                              bool supported,
+                              const MeshIndex& index,
+                              const Tree& tree,
+                              double fit,
+                              int samples) {
+  SegmentFigures out;
+  const Segment3& seg = scene.segments[s];
+  const double piece = seg.Length() / samples;
+  std::vector<TriangleIterator> hits;
+  for (int k = 0; k < samples; ++k) {
+    const Vec3 p = seg.p1 + ((k + 0.5) / samples) * (seg.p2 - seg.p1);
+    if (supported) {
+      const auto [closest, primitive] = tree.closest_point_and_primitive(ToPoint(p));
+      const double d2 = CGAL::to_double(CGAL::squared_distance(closest, ToPoint(p)));
+      if (d2 <= fit * fit) {
+        out.near_length += piece;
+        const std::size_t t = static_cast<std::size_t>(primitive - index.triangles.begin());
+        out.near_by_component.emplace_back(index.face_component[index.triangle_face[t]], piece);
+      }
+    }
+    for (ViewpointId v : scene.observations[s]) {
+      out.sight_length += piece;
+      if (IsClear(scene.viewpoints[v], p, tree, fit, hits)) out.clear_length += piece;
+    }
+  }
+  return out;
+}
+
+std::vector<PlaneId> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scene, double eps) {
+  std::vector<bool> on(scene.planes.size(), false);
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    const auto face = mesh.Face(f);
+    if (face.size() < 3) continue;
+    for (std::size_t p = 0; p < on.size(); ++p) {
+      if (on[p]) continue;
+      const Plane3& plane = scene.planes.raw()[p];
+      on[p] = std::all_of(face.begin(), face.end(), [&](std::uint32_t v) {
+        return std::abs(plane.SignedDistance(mesh.vertices[v])) <= eps;
+      });
+    }
+  }
+  std::vector<PlaneId> off;
+  for (std::size_t p = 0; p < on.size(); ++p) {
+    if (!on[p]) off.push_back(PlaneId(p));
+  }
+  return off;
+}
+
+double FaceVolume(const PolygonMesh& mesh, std::size_t f) {
+  const auto face = mesh.Face(f);
+  double v = 0.0;
+  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+    const Vec3& a = mesh.vertices[face[0]];
+    v += a.dot(mesh.vertices[face[k]].cross(mesh.vertices[face[k + 1]])) / 6.0;
+  }
+  return v;
+}
+
+SurfaceQuality Measure(const PolygonMesh& mesh,
+                       const Scene& scene,
+                       double epsilon,
+                       const SurfaceQualityOptions& options,
+                       const RunContext& ctx) {
+  LINESURF_THROW_IF(
+      scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
+      kInvalidInput,
+      kStage,
+      "memberships: " << scene.memberships.size() << " for " << scene.NumSegments() << " segments");
+  const MeshIndex index = IndexMesh(mesh);
+  Tree tree(index.triangles.begin(), index.triangles.end());
+  tree.accelerate_distance_queries();
+  const double fit = options.fit_factor * epsilon;
+  const auto supported = [&](SegmentId s) {
+    return scene.HasMemberships() && scene.memberships[s].count > 0;
+  };
+
+  std::vector<SegmentFigures> per_segment(scene.NumSegments());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, scene.NumSegments(), kSegmentGrain),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        if (ctx.ShouldStop()) return;
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const SegmentId s(static_cast<std::uint32_t>(i));
+          per_segment[i] =
+              MeasureSegment(scene, s, supported(s), index, tree, fit, options.samples_per_segment);
+        }
+      },
+      tbb::simple_partitioner{});
+  ctx.ThrowIfCancelled(kStage);
+
+  SurfaceQuality q;
+  q.epsilon = epsilon;
+  q.fit_distance = fit;
+  q.components.resize(index.num_components);
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    ComponentQuality& c = q.components[index.face_component[f]];
+    ++c.faces;
+    c.volume += FaceVolume(mesh, f);
+  }
+  double near = 0.0, sight = 0.0, clear = 0.0, sight_all = 0.0, clear_all = 0.0;
+  std::vector<double> share(index.num_components, 0.0);
+  for (std::size_t i = 0; i < scene.NumSegments(); ++i) {
+    const SegmentId s(i);
+    const SegmentFigures& f = per_segment[i];
+    sight_all += f.sight_length;
+    clear_all += f.clear_length;
+    if (!supported(s)) continue;
+    ++q.supported_segments;
+    q.supported_length += scene.segments[s].Length();
+    near += f.near_length;
+    sight += f.sight_length;
+    clear += f.clear_length;
+    if (f.near_by_component.empty()) continue;
+    for (const auto& [c, length] : f.near_by_component) {
+      q.components[c].supported_length += length;
+      share[c] += length;
+    }
+    std::uint32_t best = f.near_by_component.front().first;
+    for (const auto& [c, length] : f.near_by_component) {
+      if (share[c] > share[best] || (share[c] == share[best] && c < best)) best = c;
+    }
+    ++q.components[best].supported_segments;
+    for (const auto& [c, length] : f.near_by_component) share[c] = 0.0;
+  }
+  q.data_fit = q.supported_length > 0.0 ? near / q.supported_length : 0.0;
+  q.visibility_consistency = sight > 0.0 ? clear / sight : 1.0;
+  q.visibility_consistency_all = sight_all > 0.0 ? clear_all / sight_all : 1.0;
+
+  std::stable_sort(q.components.begin(),
+                   q.components.end(),
+                   [](const ComponentQuality& a, const ComponentQuality& b) {
+                     return std::abs(a.volume) > std::abs(b.volume);
+                   });
+  for (ComponentQuality& c : q.components) {
+    c.floating = c.supported_segments == 0;
+    q.floating_fragments += c.floating ? 1 : 0;
+    q.enclosed_volume += std::abs(c.volume);
+  }
+  q.largest_component_share =
+      q.enclosed_volume > 0.0 ? std::abs(q.components.front().volume) / q.enclosed_volume : 0.0;
+  q.planes_off_surface = PlanesOffSurface(mesh, scene, epsilon);
+  return q;
+}
+
+}  // namespace
+
+Status SurfaceQualityOptions::Validate() const {
+  if (!(fit_factor > 0.0 && std::isfinite(fit_factor))) {
+    return Error{ErrorCode::kInvalidOptions, kStage, "fit_factor must be > 0"};
+  }
+  if (samples_per_segment < 1 || samples_per_segment > kMaxSamplesPerSegment) {
+    return Error{ErrorCode::kInvalidOptions, kStage, "samples_per_segment must be in [1, 1024]"};
+  }
+  return {};
+}
+
+Expected<SurfaceQuality> MeasureSurfaceQuality(const PolygonMesh& mesh,
+                                               const Scene& scene,
+                                               double epsilon,
+                                               const SurfaceQualityOptions& options,
+                                               const RunContext& ctx) noexcept {
+  if (Status s = options.Validate(); !s) return s.error();
+  if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
+    return Error{ErrorCode::kInvalidOptions, kStage, "epsilon must be > 0"};
+  }
+  return CatchAll(kStage, [&] {
+    return RunInArena(ctx, [&] { return Measure(mesh, scene, epsilon, options, ctx); });
+  });
+}
+
+}  // namespace linesurf::pipeline

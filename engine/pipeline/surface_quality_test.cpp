@@ -1,0 +1,163 @@
+#include "engine/pipeline/surface_quality.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <array>
+
+namespace linesurf::pipeline {
+namespace {
+
+constexpr double kEps = 0.01;
+
+/// Appends the box [lo, hi] with faces counter-clockwise seen from outside.
+void AddBox(PolygonMesh& mesh, const Vec3& lo, const Vec3& hi) {
+  const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.emplace_back(
+        i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z());
+  }
+  constexpr std::array<std::array<std::uint32_t, 4>, 6> kFaces{
+      {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}}};
+  for (const auto& f : kFaces) {
+    const std::array<std::uint32_t, 4> face{base + f[0], base + f[1], base + f[2], base + f[3]};
+    mesh.AddFace(face);
+  }
+}
+
+/// The cube [-1, 1]^3: its 6 planes (order -x, +x, -y, +y, -z, +z), a textural segment across
+/// the middle of every face seen from 5 units along the face normal, and its 12 edges, each seen
+/// from outside both of its faces.
+Scene CubeScene() {
+  Scene scene;
+  const std::array<Vec3, 6> normals{
+      -Vec3::UnitX(), Vec3::UnitX(), -Vec3::UnitY(), Vec3::UnitY(), -Vec3::UnitZ(), Vec3::UnitZ()};
+  for (const Vec3& n : normals) scene.planes.push_back(Plane3{n, n});
+  const auto add = [&](const Segment3& s, const Vec3& eye, PlaneMembership m) {
+    scene.segments.push_back(s);
+    scene.viewpoints.push_back(eye);
+    const std::array<ViewpointId, 1> row{ViewpointId(scene.viewpoints.size() - 1)};
+    scene.observations.AddRow(row);
+    scene.memberships.push_back(m);
+  };
+  for (std::uint32_t p = 0; p < 6; ++p) {
+    const Vec3 n = normals[p];
+    const Vec3 along = n.cross(std::abs(n.z()) > 0.5 ? Vec3::UnitX() : Vec3::UnitZ());
+    PlaneMembership m;
+    m.Add(PlaneId(p));
+    add(Segment3{n - 0.8 * along, n + 0.8 * along}, 5.0 * n, m);
+  }
+  for (std::uint32_t a = 0; a < 6; ++a) {
+    for (std::uint32_t b = a + 1; b < 6; ++b) {
+      const Vec3 na = normals[a], nb = normals[b];
+      if (std::abs(na.dot(nb)) > 0.5) continue;  // opposite faces share no edge
+      const Vec3 dir = na.cross(nb);
+      PlaneMembership m;
+      m.Add(PlaneId(a));
+      m.Add(PlaneId(b));
+      add(Segment3{na + nb - dir, na + nb + dir}, 3.0 * (na + nb), m);
+    }
+  }
+  return scene;
+}
+
+SurfaceQuality Measure(const PolygonMesh& mesh, const Scene& scene, int threads = 0) {
+  RunContext ctx;
+  ctx.num_threads = threads;
+  Expected<SurfaceQuality> q = MeasureSurfaceQuality(mesh, scene, kEps, {}, ctx);
+  EXPECT_TRUE(q.has_value()) << (q ? "" : q.error().message);
+  return q ? *q : SurfaceQuality{};
+}
+
+TEST(SurfaceQuality, PerfectReconstructionScoresFull) {
+  const Scene scene = CubeScene();
+  ASSERT_EQ(scene.NumSegments(), 18u);
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const SurfaceQuality q = Measure(mesh, scene);
+  EXPECT_EQ(q.supported_segments, 18u);
+  EXPECT_NEAR(q.data_fit, 1.0, 1e-12);
+  EXPECT_NEAR(q.visibility_consistency, 1.0, 1e-12);
+  ASSERT_EQ(q.components.size(), 1u);
+  EXPECT_NEAR(q.components[0].volume, 8.0, 1e-12);
+  EXPECT_EQ(q.components[0].supported_segments, 18u);
+  EXPECT_EQ(q.floating_fragments, 0u);
+  EXPECT_NEAR(q.largest_component_share, 1.0, 1e-12);
+  EXPECT_TRUE(q.planes_off_surface.empty());
+}
+
+TEST(SurfaceQuality, ShrunkBoxLosesDataFit) {
+  // Every face 5 cm inside: farther than 2 eps from every segment.
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-0.95, -0.95, -0.95), Vec3(0.95, 0.95, 0.95));
+  const SurfaceQuality q = Measure(mesh, CubeScene());
+  EXPECT_LT(q.data_fit, 1e-12);
+  EXPECT_EQ(q.floating_fragments, 1u);  // nothing supported lies on it
+  EXPECT_EQ(q.planes_off_surface.size(), 6u);
+}
+
+TEST(SurfaceQuality, FloatingBoxIsOneFragment) {
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(10, 10, 10), Vec3(10.5, 10.5, 10.5));
+  const SurfaceQuality q = Measure(mesh, CubeScene());
+  ASSERT_EQ(q.components.size(), 2u);
+  EXPECT_EQ(q.floating_fragments, 1u);
+  EXPECT_FALSE(q.components[0].floating);
+  EXPECT_TRUE(q.components[1].floating);
+  EXPECT_NEAR(q.components[1].volume, 0.125, 1e-12);
+  EXPECT_NEAR(q.largest_component_share, 8.0 / 8.125, 1e-12);
+  EXPECT_NEAR(q.data_fit, 1.0, 1e-12);
+}
+
+TEST(SurfaceQuality, OccludingWallLowersVisibilityConsistency) {
+  // A plate between the +x face and its viewpoint (5, 0, 0) blocks the view of that face's
+  // segment (one of 18 supported segments, length 1.6 of 1.6 x 6 + 2 x 12).
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(2.0, -1.5, -1.5), Vec3(2.2, 1.5, 1.5));
+  const SurfaceQuality q = Measure(mesh, CubeScene());
+  EXPECT_NEAR(q.visibility_consistency, 1.0 - 1.6 / (1.6 * 6 + 2.0 * 12), 1e-12);
+  EXPECT_EQ(q.floating_fragments, 1u);
+}
+
+TEST(SurfaceQuality, CoincidentVerticesJoinComponents) {
+  // Two boxes touching along an edge, with their own vertices: one solid.
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(1, 1, 0), Vec3(2, 2, 1));
+  Scene scene;
+  const SurfaceQuality q = Measure(mesh, scene);
+  EXPECT_EQ(q.components.size(), 1u);
+  EXPECT_NEAR(q.enclosed_volume, 2.0, 1e-12);
+}
+
+TEST(SurfaceQuality, IdenticalForAnyThreadCount) {
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(2.0, -0.5, -0.5), Vec3(2.2, 0.5, 0.5));
+  const Scene scene = CubeScene();
+  const SurfaceQuality a = Measure(mesh, scene, 1);
+  const SurfaceQuality b = Measure(mesh, scene, 2);
+  EXPECT_EQ(a.data_fit, b.data_fit);
+  EXPECT_EQ(a.visibility_consistency, b.visibility_consistency);
+  EXPECT_EQ(a.components.size(), b.components.size());
+}
+
+TEST(SurfaceQuality, RejectsBadInput) {
+  RunContext ctx;
+  PolygonMesh empty;
+  EXPECT_EQ(MeasureSurfaceQuality(empty, CubeScene(), kEps, {}, ctx).error().code,
+            ErrorCode::kInvalidInput);
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  EXPECT_EQ(MeasureSurfaceQuality(mesh, CubeScene(), 0.0, {}, ctx).error().code,
+            ErrorCode::kInvalidOptions);
+  SurfaceQualityOptions bad;
+  bad.samples_per_segment = 0;
+  EXPECT_EQ(MeasureSurfaceQuality(mesh, CubeScene(), kEps, bad, ctx).error().code,
+            ErrorCode::kInvalidOptions);
+}
+
+}  // namespace
+}  // namespace linesurf::pipeline
