@@ -117,7 +117,8 @@ struct PlaneSupport {
 struct EpsilonEstimate {
   double epsilon = 0.0;  ///< scene units
   /// "given" (PlaneDetectionOptions::epsilon), "relative" (x scene diagonal), "planes" (residuals
-  /// of the scene's own planes) or "probe" (residuals of probe detections).
+  /// of the scene's own planes), "probe" (residuals of probe detections) or "none" (no segment
+  /// of positive length: eps 1, nothing to detect).
   std::string source;
   /// Robust noise scale 1.4826 x median |endpoint-to-plane distance| (0 unless estimated).
   double noise_scale = 0.0;

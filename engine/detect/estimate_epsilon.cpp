@@ -109,10 +109,12 @@ EpsilonEstimate Probe(const Scene& scene,
                       const PlaneDetectionOptions& options,
                       const RunContext& ctx) {
   const double length = MedianLength(scene);
-  LINESURF_THROW_IF(!(length > 0.0),
-                    kDegenerate,
-                    kStage,
-                    "eps cannot be estimated: no segment of positive length");
+  if (!(length > 0.0)) {  // nothing to detect: any eps gives no plane
+    EpsilonEstimate none;
+    none.epsilon = 1.0;
+    none.source = "none";
+    return none;
+  }
   const double eps0 = kInitialOverMedianLength * length;
   PlaneDetectionOptions probe = options;
   probe.relative_epsilon.reset();
