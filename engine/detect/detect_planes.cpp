@@ -54,6 +54,9 @@ Status Invalid(const std::string& field, const std::string& range) {
 
 Status PlaneDetectionOptions::Validate() const {
   if (epsilon && (!(*epsilon > 0.0) || !std::isfinite(*epsilon))) return Invalid("epsilon", "> 0");
+  if (!(epsilon_over_noise > 0.0 && epsilon_over_noise <= 20.0)) {
+    return Invalid("epsilon_over_noise", "in (0, 20]");
+  }
   if (relative_epsilon && !(*relative_epsilon > 0.0 && *relative_epsilon < 0.5)) {
     return Invalid("relative_epsilon", "in (0, 0.5)");
   }

@@ -27,6 +27,10 @@ struct PlaneDetectionOptions {
   /// the data (estimate_epsilon.h), so metric scenes, SfM units and noisier clouds need no flag.
   /// Paper: 2 cm on metric scenes.
   std::optional<double> epsilon;
+  /// eps auto: eps = epsilon_over_noise x the robust noise scale of the endpoint-to-plane
+  /// residuals ((0, 20]). 2.5: the mean of two endpoint distances of a Gaussian N(0, s^2) segment
+  /// stays under 2.5 s with probability 99.9 %, its distance to a crease line with 99.2 %.
+  double epsilon_over_noise = 2.5;
   /// If set, eps = relative_epsilon x (scene bounding-box diagonal) instead of `epsilon`. Range
   /// (0, 0.5).
   std::optional<double> relative_epsilon;

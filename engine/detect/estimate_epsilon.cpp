@@ -61,7 +61,8 @@ double MedianLength(const Scene& scene) {
 /// residuals near zero.
 EpsilonEstimate ScaleOfResiduals(const Scene& scene,
                                  const IdVector<PlaneId, Plane3>& planes,
-                                 const IdVector<SegmentId, PlaneMembership>& memberships) {
+                                 const IdVector<SegmentId, PlaneMembership>& memberships,
+                                 double epsilon_over_noise) {
   EpsilonEstimate e;
   const std::size_t n = std::min(memberships.size(), scene.NumSegments());
   const double length = MedianLength(scene);
@@ -101,7 +102,7 @@ EpsilonEstimate ScaleOfResiduals(const Scene& scene,
   const auto mid = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
   std::nth_element(d.begin(), mid, d.end());
   e.noise_scale = kMadToSigma * *mid;
-  e.epsilon = kEpsilonOverNoise * e.noise_scale;
+  e.epsilon = epsilon_over_noise * e.noise_scale;
   return e;
 }
 
@@ -125,7 +126,8 @@ EpsilonEstimate Probe(const Scene& scene,
     probe.epsilon = eps;
     Expected<PlaneDetectionResult> found = DetectPlanes(scene, probe, ctx);
     if (!found) throw LinesurfException(found.error());
-    const EpsilonEstimate e = ScaleOfResiduals(scene, found->planes, found->memberships);
+    const EpsilonEstimate e =
+        ScaleOfResiduals(scene, found->planes, found->memberships, options.epsilon_over_noise);
     out.rounds = round;
     out.residuals = e.residuals;
     out.noise_scale = e.noise_scale;
@@ -143,8 +145,8 @@ EpsilonEstimate Probe(const Scene& scene,
 
 }  // namespace
 
-EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene) {
-  EpsilonEstimate e = ScaleOfResiduals(scene, scene.planes, scene.memberships);
+EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene, double epsilon_over_noise) {
+  EpsilonEstimate e = ScaleOfResiduals(scene, scene.planes, scene.memberships, epsilon_over_noise);
   e.source = "planes";
   return e;
 }
@@ -170,7 +172,7 @@ Expected<EpsilonEstimate> ResolveEpsilon(const Scene& scene,
       return e;
     }
     if (scene.HasMemberships()) {
-      e = EstimateEpsilonFromPlanes(scene);
+      e = EstimateEpsilonFromPlanes(scene, options.epsilon_over_noise);
       if (e.epsilon > 0.0) return e;
     }
     return Probe(scene, options, ctx);

@@ -15,11 +15,6 @@
 
 namespace linesurf {
 
-/// eps = kEpsilonOverNoise x noise scale: the mean of two endpoint distances of a Gaussian
-/// N(0, s^2) segment stays under 2.5 s with probability ~99.9 %, its distance to a crease line
-/// with ~99 %.
-inline constexpr double kEpsilonOverNoise = 2.5;
-
 /// @brief Resolves the eps of `options` for `scene`: the given value, relative_epsilon x the
 /// scene diagonal, or (neither set) the estimate above: from the scene's planes and memberships
 /// when it has some with a non-zero residual scale, else from probe detections.
@@ -31,6 +26,7 @@ inline constexpr double kEpsilonOverNoise = 2.5;
 
 /// @brief The estimate from the scene's own planes and memberships (source "planes"); eps 0 and
 /// no residuals when the scene has none, or only exact data (noise scale 0).
-[[nodiscard]] EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene);
+[[nodiscard]] EpsilonEstimate EstimateEpsilonFromPlanes(const Scene& scene,
+                                                        double epsilon_over_noise);
 
 }  // namespace linesurf
