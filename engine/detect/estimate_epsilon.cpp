@@ -1,6 +1,7 @@
 #include "engine/detect/estimate_epsilon.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/median_segment_length.h"
 #include "engine/detect/collinear_groups.h"
 #include "engine/detect/segment_geometry.h"
 
@@ -41,19 +42,6 @@ double SceneDiagonal(const Scene& scene) {
   return box.IsEmpty() ? 0.0 : box.Extent().norm();
 }
 
-double MedianLength(const Scene& scene) {
-  std::vector<double> lengths;
-  lengths.reserve(scene.NumSegments());
-  for (const Segment3& s : scene.segments) {
-    const double l = s.Length();
-    if (std::isfinite(l) && l > 0.0) lengths.push_back(l);
-  }
-  if (lengths.empty()) return 0.0;
-  const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-  std::nth_element(lengths.begin(), mid, lengths.end());
-  return *mid;
-}
-
 /// Robust scale of the endpoint distances of every distinct line to each of its planes. The
 /// parts of one line (a residual split) count once, as the line itself: a line seen by 30
 /// cameras must not weigh 30 times. Only planes holding at least kMinLinesForScale lines count
@@ -65,7 +53,7 @@ EpsilonEstimate ScaleOfResiduals(const Scene& scene,
                                  double epsilon_over_noise) {
   EpsilonEstimate e;
   const std::size_t n = std::min(memberships.size(), scene.NumSegments());
-  const double length = MedianLength(scene);
+  const double length = MedianSegmentLength(scene);
   if (n == 0 || !(length > 0.0)) return e;
   const detect::CollinearGroups groups =
       detect::GroupCollinearSegments(std::span<const Segment3>(scene.segments.raw().data(), n),
@@ -109,7 +97,7 @@ EpsilonEstimate ScaleOfResiduals(const Scene& scene,
 EpsilonEstimate Probe(const Scene& scene,
                       const PlaneDetectionOptions& options,
                       const RunContext& ctx) {
-  const double length = MedianLength(scene);
+  const double length = MedianSegmentLength(scene);
   if (!(length > 0.0)) {  // nothing to detect: any eps gives no plane
     EpsilonEstimate none;
     none.epsilon = 1.0;

@@ -1,5 +1,7 @@
 #include "engine/pipeline/compute_evidence.h"
 
+#include "engine/core/median_segment_length.h"
+
 #include <Eigen/Geometry>
 
 #include <tbb/blocked_range.h>
@@ -418,16 +420,8 @@ Status EnergyOptions::Validate() const {
 }
 
 double DefaultSigma(const Scene& scene) {
-  std::vector<double> lengths;
-  lengths.reserve(scene.NumSegments());
-  for (const Segment3& s : scene.segments) {
-    const double l = s.Length();
-    if (std::isfinite(l) && l > 0.0) lengths.push_back(l);
-  }
-  if (lengths.empty()) return 1.0;
-  const auto mid = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
-  std::nth_element(lengths.begin(), mid, lengths.end());
-  return *mid;
+  const double median = MedianSegmentLength(scene);
+  return median > 0.0 ? median : 1.0;
 }
 
 Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& scene,

@@ -1,5 +1,6 @@
 #include "engine/pipeline/surface_quality.h"
 
+#include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 
@@ -34,26 +35,6 @@ using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
 Kernel::Point_3 ToPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-
-/// Union-find with path halving; the representative is the smallest index of a set.
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  std::size_t Find(std::size_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void Join(std::size_t a, std::size_t b) {
-    a = Find(a);
-    b = Find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
 
 /// The mesh as triangles (fan of each face, degenerate ones skipped), with the component of
 /// every face.
@@ -92,11 +73,11 @@ std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& 
     return std::make_pair(key(a), a) < std::make_pair(key(b), b);
   });
   for (std::size_t k = 1; k < nv; ++k) {
-    if (key(order[k]) == key(order[k - 1])) sets.Join(order[k], order[k - 1]);
+    if (key(order[k]) == key(order[k - 1])) sets.Union(order[k], order[k - 1]);
   }
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
-    for (std::size_t k = 1; k < face.size(); ++k) sets.Join(face[0], face[k]);
+    for (std::size_t k = 1; k < face.size(); ++k) sets.Union(face[0], face[k]);
   }
   // Number components by their first face.
   std::vector<std::uint32_t> id_of_root(nv, std::numeric_limits<std::uint32_t>::max());
