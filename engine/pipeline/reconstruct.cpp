@@ -169,13 +169,6 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     ExtractResult surface = Take(ExtractSurface(cx, labeling.labels, extract));
     result.mesh = std::move(surface.mesh);
     const IndexTopology topology = CheckIndexTopology(result.mesh);
-    if (options.measure_quality && result.mesh.NumFaces() > 0) {
-      timer.Start("quality");
-      stats.quality = Take(MeasureSurfaceQuality(result.mesh, scene, stats.epsilon.epsilon,
-                                                 options.quality, stage_ctx));
-      stats.quality_measured = true;
-    }
-    for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
     timer.Stop();
 
     facts.interior = interior;
@@ -198,6 +191,16 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     if (judgement.error) throw LinesurfException(*judgement.error);
     result.warnings.insert(result.warnings.end(), judgement.warnings.begin(),
                            judgement.warnings.end());
+
+    // Figures without ground truth, in the local frame, on a surface the judgement accepted.
+    if (options.measure_quality) {
+      timer.Start("quality");
+      stats.quality = Take(MeasureSurfaceQuality(result.mesh, scene, stats.epsilon.epsilon,
+                                                 options.quality, stage_ctx));
+      stats.quality_measured = true;
+      timer.Stop();
+    }
+    for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
 
     // Planes back to world coordinates.
     result.planes = scene.planes;
