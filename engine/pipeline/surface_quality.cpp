@@ -2,7 +2,9 @@
 
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
+#include "engine/core/median_segment_length.h"
 #include "engine/core/parallel.h"
+#include "engine/detect/collinear_groups.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -27,6 +29,9 @@ constexpr const char* kStage = "surface_quality";
 /// Segments per parallel task; fixed so the chunking never depends on the thread count.
 constexpr std::size_t kSegmentGrain = 64;
 constexpr int kMaxSamplesPerSegment = 1024;
+/// Parts of one line: every endpoint within this fraction of the median segment length of the
+/// other's line (as eps auto counts them).
+constexpr double kCollinearPartsOverMedianLength = 1e-5;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Triangle = Kernel::Triangle_3;
@@ -173,6 +178,21 @@ SegmentFigures MeasureSegment(const Scene& scene,
   return out;
 }
 
+/// The distinct line of every segment: the parts of one line (a residual split: exactly
+/// collinear) share one id.
+std::vector<std::uint32_t> LineOfSegment(const Scene& scene) {
+  std::vector<std::uint32_t> line(scene.NumSegments(), 0);
+  const double length = MedianSegmentLength(scene);
+  if (!(length > 0.0)) return line;
+  const detect::CollinearGroups groups = detect::GroupCollinearSegments(
+      scene.segments.raw(), kCollinearPartsOverMedianLength * length);
+  for (std::size_t g = 0; g < groups.members.NumRows(); ++g) {
+    for (SegmentId s : groups.members[SegmentId(g)])
+      line[s.index()] = static_cast<std::uint32_t>(g);
+  }
+  return line;
+}
+
 std::vector<PlaneId> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scene, double eps) {
   std::vector<bool> on(scene.planes.size(), false);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
@@ -246,6 +266,8 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
   }
   double near = 0.0, sight = 0.0, clear = 0.0, sight_all = 0.0, clear_all = 0.0;
   std::vector<double> share(index.num_components, 0.0);
+  const std::vector<std::uint32_t> line_of = LineOfSegment(scene);
+  std::vector<std::vector<std::uint32_t>> lines_held(index.num_components);
   for (std::size_t i = 0; i < scene.NumSegments(); ++i) {
     const SegmentId s(i);
     const SegmentFigures& f = per_segment[i];
@@ -267,19 +289,26 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
       if (share[c] > share[best] || (share[c] == share[best] && c < best)) best = c;
     }
     ++q.components[best].supported_segments;
+    lines_held[best].push_back(line_of[i]);
     for (const auto& [c, length] : f.near_by_component) share[c] = 0.0;
   }
   q.data_fit = q.supported_length > 0.0 ? near / q.supported_length : 0.0;
   q.visibility_consistency = sight > 0.0 ? clear / sight : 1.0;
   q.visibility_consistency_all = sight_all > 0.0 ? clear_all / sight_all : 1.0;
 
+  for (std::size_t c = 0; c < index.num_components; ++c) {
+    std::vector<std::uint32_t>& held = lines_held[c];
+    std::sort(held.begin(), held.end());
+    q.components[c].supported_lines =
+        static_cast<std::size_t>(std::unique(held.begin(), held.end()) - held.begin());
+  }
   std::stable_sort(q.components.begin(),
                    q.components.end(),
                    [](const ComponentQuality& a, const ComponentQuality& b) {
                      return std::abs(a.volume) > std::abs(b.volume);
                    });
   for (ComponentQuality& c : q.components) {
-    c.floating = c.supported_segments == 0;
+    c.floating = c.supported_lines < static_cast<std::size_t>(options.min_lines_per_component);
     q.floating_fragments += c.floating ? 1 : 0;
     q.enclosed_volume += std::abs(c.volume);
   }
@@ -294,6 +323,9 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
 Status SurfaceQualityOptions::Validate() const {
   if (!(fit_factor > 0.0 && std::isfinite(fit_factor))) {
     return Error{ErrorCode::kInvalidOptions, kStage, "fit_factor must be > 0"};
+  }
+  if (min_lines_per_component < 0) {
+    return Error{ErrorCode::kInvalidOptions, kStage, "min_lines_per_component must be >= 0"};
   }
   if (samples_per_segment < 1 || samples_per_segment > kMaxSamplesPerSegment) {
     return Error{ErrorCode::kInvalidOptions, kStage, "samples_per_segment must be in [1, 1024]"};

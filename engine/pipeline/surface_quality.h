@@ -2,8 +2,8 @@
 /// @file surface_quality.h
 /// @brief Quality of a reconstruction without ground truth (docs/evaluation.md): how well the
 /// surface fits the segments that support a plane, whether the surface blocks the sight rays of
-/// the observations, its connected components (a component holding no supported segment is a
-/// floating fragment) and the planes on which no face lies. Shared by `linesurf evaluate
+/// the observations, its connected components (a component holding fewer than 3 supported
+/// lines is a floating fragment) and the planes on which no face lies. Shared by `linesurf evaluate
 /// --lines` and the `reconstruct` report.
 
 #include "linesurf/error.h"
@@ -24,6 +24,10 @@ struct SurfaceQualityOptions {
   /// Each segment is integrated at this many midpoint samples of equal sub-segments (1..1024).
   /// 8: shares to 1/8 of a segment, whatever the units.
   int samples_per_segment = 8;
+  /// A component holding fewer distinct supported lines than this is a floating fragment (>= 0;
+  /// 3, the fewest a detected plane has): a slab on a plane of two outliers holds a few segments,
+  /// and with a residual split each of its lines counts once, not once per camera.
+  int min_lines_per_component = 3;
 
   [[nodiscard]] Status Validate() const;
 };
@@ -37,7 +41,9 @@ struct ComponentQuality {
   double supported_length = 0.0;
   /// Supported segments whose greater share of near samples lies on this component.
   std::size_t supported_segments = 0;
-  /// Holds no supported segment.
+  /// Distinct lines among them (collinear parts of one line count once).
+  std::size_t supported_lines = 0;
+  /// Holds fewer than SurfaceQualityOptions::min_lines_per_component lines.
   bool floating = false;
 };
 

@@ -110,6 +110,34 @@ TEST(SurfaceQuality, FloatingBoxIsOneFragment) {
   EXPECT_NEAR(q.data_fit, 1.0, 1e-12);
 }
 
+TEST(SurfaceQuality, ABoxHoldingFewerThanThreeLinesIsAFragment) {
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(10, 10, 10), Vec3(11, 11, 11));
+  Scene scene = CubeScene();
+  const auto add_on_far_top = [&](double y, double x0, double x1) {
+    scene.segments.push_back(Segment3{Vec3(x0, y, 11), Vec3(x1, y, 11)});
+    scene.viewpoints.push_back(Vec3(10.5, 10.5, 15));
+    const std::array<ViewpointId, 1> row{ViewpointId(scene.viewpoints.size() - 1)};
+    scene.observations.AddRow(row);
+    PlaneMembership m;
+    m.Add(PlaneId(5u));
+    scene.memberships.push_back(m);
+  };
+  add_on_far_top(10.3, 10.1, 10.5);  // line 1, in two parts (a residual split)
+  add_on_far_top(10.3, 10.5, 10.9);
+  add_on_far_top(10.6, 10.1, 10.9);  // line 2
+  SurfaceQuality q = Measure(mesh, scene);
+  ASSERT_EQ(q.components.size(), 2u);
+  EXPECT_EQ(q.components[1].supported_segments, 3u);
+  EXPECT_EQ(q.components[1].supported_lines, 2u);
+  EXPECT_EQ(q.floating_fragments, 1u);
+  add_on_far_top(10.9, 10.1, 10.9);  // line 3
+  q = Measure(mesh, scene);
+  EXPECT_EQ(q.components[1].supported_lines, 3u);
+  EXPECT_EQ(q.floating_fragments, 0u);
+}
+
 TEST(SurfaceQuality, OccludingWallLowersVisibilityConsistency) {
   // A plate between the +x face and its viewpoint (5, 0, 0) blocks the view of that face's
   // segment (one of 18 supported segments, length 1.6 of 1.6 x 6 + 2 x 12).

@@ -12,6 +12,7 @@ nlohmann::json SurfaceQualityJson(const pipeline::SurfaceQuality& q) {
                           {"volume", c.volume},
                           {"supported_length", c.supported_length},
                           {"supported_segments", c.supported_segments},
+                          {"supported_lines", c.supported_lines},
                           {"floating", c.floating}});
   }
   nlohmann::json off = nlohmann::json::array();
