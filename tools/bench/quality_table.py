@@ -14,6 +14,8 @@ figures without ground truth only).
 Usage: tools/bench/quality_table.py [--linesurf build/bin/linesurf] [--workdir /tmp/qt]
          [--scenes house,lshape,room,city-4] [--seeds 1-5] [--conditions a,b]
          [--output runs.jsonl] [--andalusian PATH] [-- extra reconstruct options]
+       tools/bench/quality_table.py --compare NAME=RUNS.jsonl ... [--seeds 1-2] [--scenes a,b]
+         (sensitivity: one row per file, over the runs of the given seeds)
 Exit status: 0, 1 when a run failed, 2 on bad usage. Python 3 standard library only.
 """
 
@@ -131,8 +133,34 @@ def andalusian(args, extra):
     print("\n".join(lines))
 
 
+def compare(files, seeds, scenes):
+    print("| variant | runs | mean precision % | mean completeness % | lowest of both % | "
+          "scene/condition means >= 95 % |")
+    print("|---|---|---|---|---|---|")
+    for item in files:
+        name, path = item.split("=", 1)
+        runs = [json.loads(line) for line in open(path)]
+        runs = [r for r in runs
+                if "error" not in r and r["seed"] in seeds and (not scenes or r["scene"] in scenes)]
+        groups = {}
+        for r in runs:
+            groups.setdefault((r["scene"], r["condition"]), []).append(r)
+        good = sum(statistics.mean(r["precision"] for r in g) >= 0.95 and
+                   statistics.mean(r["completeness"] for r in g) >= 0.95 for g in groups.values())
+        print(f"| {name} | {len(runs)} | {100 * statistics.mean(r['precision'] for r in runs):.1f} | "
+              f"{100 * statistics.mean(r['completeness'] for r in runs):.1f} | "
+              f"{100 * min(min(r['precision'], r['completeness']) for r in runs):.1f} | "
+              f"{good}/{len(groups)} |")
+
+
 def main():
     argv = sys.argv[1:]
+    if argv and argv[0] == "--compare":
+        seeds = seeds_of(argv[argv.index("--seeds") + 1]) if "--seeds" in argv else range(1, 1000)
+        scenes = argv[argv.index("--scenes") + 1].split(",") if "--scenes" in argv else []
+        files = [a for a in argv[1:] if "=" in a]
+        compare(files, set(seeds), scenes)
+        return 0
     extra = []
     if "--" in argv:
         extra = argv[argv.index("--") + 1:]
