@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string_view>
 
+#include "engine/core/coordinate_bound.h"
 #include "engine/core/exception.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
@@ -31,7 +32,12 @@ Vec3 ParseVertex(const std::vector<std::string_view>& tokens, std::size_t first,
   return v;
 }
 
-void CheckFaces(const PolygonMesh& mesh, const std::string& file) {
+/// Every vertex within the coordinate bound (what follows multiplies coordinates: beyond it
+/// normals, areas and the exact predicates overflow), every face index in range.
+void CheckMesh(const PolygonMesh& mesh, const std::string& file) {
+  if (const auto violation = CoordinateBoundViolation(mesh)) {
+    ThrowError(ErrorCode::kInvalidInput, kStage, file + ": " + *violation);
+  }
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     for (const std::uint32_t i : mesh.Face(f)) {
       LINESURF_THROW_IF(i >= mesh.vertices.size(), kInvalidInput, kStage,
@@ -367,7 +373,6 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
       }
     }
   }
-  CheckFaces(mesh, file);
   return mesh;
 }
 
@@ -381,11 +386,11 @@ Expected<PolygonMesh> ReadMesh(const std::filesystem::path& path) noexcept {
                       file << ": unknown mesh extension '" << path.extension().string()
                            << "' (expected .ply, .obj or .off)");
     const std::string content = ReadWholeFile(path, kStage);
-    switch (format) {
-      case MeshFormat::kPly: return ReadPly(content, file);
-      case MeshFormat::kObj: return ReadObj(content, file);
-      default: return ReadOff(content, file);
-    }
+    PolygonMesh mesh = format == MeshFormat::kPly   ? ReadPly(content, file)
+                       : format == MeshFormat::kObj ? ReadObj(content, file)
+                                                    : ReadOff(content, file);
+    CheckMesh(mesh, file);
+    return mesh;
   });
 }
 

@@ -71,7 +71,11 @@ Status SceneReadOptions::Validate(SceneFormat resolved) const {
 Expected<SceneReadResult> ReadSceneWithWarnings(const std::filesystem::path& path,
                                                 const SceneReadOptions& options) noexcept {
   const SceneFormat format = ResolveSceneFormat(path, options);
-  if (Status valid = options.Validate(format); !valid) return valid.error();
+  if (Status valid = options.Validate(format); !valid) {
+    Error error = valid.error();
+    error.message = path.string() + ": " + error.message;
+    return error;
+  }
   if (format == SceneFormat::kReferenceJson) {
     auto json = ReadReferenceJsonWithWarnings(path);
     if (!json) return json.error();

@@ -25,6 +25,13 @@ namespace {
 constexpr const char* kStage = "evidence";
 /// Fixed-point scale of the accumulated weights: 2^-32 resolution, totals up to 2^31.
 constexpr double kFixedPointScale = 4294967296.0;
+/// Largest fixed-point total: every accumulated cost must stay below it, or the sums wrap.
+constexpr double kFixedPointLimit = 9.2233720368547758e18 / kFixedPointScale;  // 2^63 / scale
+/// Largest weight accepted (defaults are 0.01 to 1; beyond this the LP loses all precision).
+constexpr double kMaxWeight = 1e6;
+/// Smallest sigma, as a fraction of the box diagonal: finer scales resolve nothing and make the
+/// per-length costs (edge weight * length / sigma) overflow.
+constexpr double kMinSigmaRelative = 1e-9;
 /// Segments per parallel work item (fixed, so chunking never depends on the thread count).
 constexpr std::size_t kSegmentChunk = 32;
 /// Sample points are moved off their plane(s) by this fraction of the box diagonal before
@@ -404,7 +411,7 @@ Status EnergyOptions::Validate() const {
       {"corner_weight", corner_weight},       {"area_weight", area_weight},
       {"viewpoint_prior_weight", viewpoint_prior_weight}};
   for (const auto& [name, w] : weights) {
-    if (!std::isfinite(w) || w < 0.0) return bad(name, "must be finite and >= 0");
+    if (!(w >= 0.0 && w <= kMaxWeight)) return bad(name, "must be in [0, 1e6]");
   }
   if (sigma && !(std::isfinite(*sigma) && *sigma > 0.0)) return bad("sigma", "must be > 0");
   if (!(samples_per_sigma > 0.0 && samples_per_sigma <= 1000.0)) {
@@ -422,6 +429,35 @@ Status EnergyOptions::Validate() const {
 double DefaultSigma(const Scene& scene) {
   const double median = MedianSegmentLength(scene);
   return median > 0.0 ? median : 1.0;
+}
+
+Status CheckEnergyScale(const Scene& scene, const Box3& box, const EnergyOptions& options) {
+  const double sigma = options.sigma ? *options.sigma : DefaultSigma(scene);
+  const double diagonal = box.Extent().norm();
+  std::ostringstream why;
+  if (!(sigma >= kMinSigmaRelative * diagonal)) {
+    why << "sigma " << sigma << " is below " << kMinSigmaRelative << " of the scene box diagonal ("
+        << diagonal << "): give a sigma near the typical segment length";
+    return Error{ErrorCode::kInvalidOptions, "energy_options", why.str()};
+  }
+  double length_views = 0.0;
+  for (std::size_t s = 0; s < scene.NumSegments(); ++s) {
+    const double length = scene.segments[SegmentId(s)].Length();
+    length_views += length * static_cast<double>(scene.observations[SegmentId(s)].size());
+  }
+  const double weight =
+      std::max({options.textural_weight, options.structural_weight, options.visibility_weight});
+  // A structural segment feeds its group and the visibility of its rays: at most 2 terms.
+  const double total =
+      2.0 * weight * length_views / sigma +
+      options.viewpoint_prior_weight * static_cast<double>(scene.observations.NumItems());
+  if (!(total < kFixedPointLimit)) {
+    why << "sigma " << sigma << " with weights up to " << weight << " gives evidence totals of "
+        << total << ", beyond the " << kFixedPointLimit
+        << " the accumulators hold: raise sigma or lower the weights";
+    return Error{ErrorCode::kInvalidOptions, "energy_options", why.str()};
+  }
+  return {};
 }
 
 Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& scene,
@@ -457,6 +493,9 @@ Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& sce
                         "observation of viewpoint " << v.index() << " out of range");
     }
     stats.sigma = options.sigma ? *options.sigma : DefaultSigma(scene);
+    if (Status scale = CheckEnergyScale(scene, cx.box, options); !scale) {
+      throw LinesurfException(scale.error());
+    }
 
     const partition::CellLocator locator(cx);
     Accumulators acc;

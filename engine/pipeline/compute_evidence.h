@@ -52,8 +52,10 @@ struct EnergyOptions {
   /// Viewpoint prior (>= 0): cost per observation when the viewpoint's cell is full. The
   /// reference uses 1.
   double viewpoint_prior_weight = 1.0;
-  /// Scale sigma (scene units, > 0). Unset: the median segment length of the scene (about 1 m on
-  /// Andalusian, where the reference uses 1), so weights mean the same at any scene scale.
+  /// Scale sigma (scene units, > 0, at least 1e-9 of the box diagonal, and large enough that
+  /// the total evidence weight x length / sigma x views stays below 2^31: ComputeEvidence
+  /// checks both). Unset: the median segment length of the scene (about 1 m on Andalusian,
+  /// where the reference uses 1), so weights mean the same at any scene scale.
   std::optional<double> sigma;
   /// Samples per sigma of segment length ((0, 1000]); 4 resolves cells a quarter of a typical
   /// segment long.
@@ -67,9 +69,17 @@ struct EnergyOptions {
   /// one structural group.
   bool structural_as_textural = false;
 
-  /// Names the first out-of-range field.
+  /// Names the first out-of-range field; every weight must be in [0, 1e6].
   [[nodiscard]] Status Validate() const;
 };
+
+/// The bounds options alone cannot state (kInvalidOptions): sigma (given, or the default) at
+/// least 1e-9 of the diagonal of `box`, and the total evidence (weight x length / sigma x views,
+/// summed over the segments) within what the fixed-point accumulators hold (2^31), so no cost
+/// wraps or overflows. ComputeEvidence checks it; Reconstruct checks it before the complex.
+[[nodiscard]] Status CheckEnergyScale(const Scene& scene,
+                                      const Box3& box,
+                                      const EnergyOptions& options);
 
 /// Boundary condition on the cells touching the box.
 enum class BoundaryMode {

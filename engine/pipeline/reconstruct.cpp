@@ -134,6 +134,11 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     result.world_from_local = scene.world_from_local;
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
                       "no plane: nothing to reconstruct from");
+    // The derived option bounds, before the complex (ComputeEvidence checks them again).
+    if (Status scale = CheckEnergyScale(scene, SceneBox(scene, options.box_margin), options.energy);
+        !scale) {
+      throw LinesurfException(scale.error());
+    }
 
     timer.Start("complex");
     const Box3 box = SceneBox(scene, options.box_margin);

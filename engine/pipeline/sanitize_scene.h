@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "linesurf/error.h"
+#include "engine/core/coordinate_bound.h"
 #include "engine/core/scene.h"
 
 namespace linesurf::pipeline {
@@ -24,9 +25,8 @@ struct SanitizeOptions {
   /// point sits up to ~2,000 units away, which costs precision in every plane offset.
   double max_plane_point_distance_rel = 1.0;
   /// Coordinates (of endpoints, viewpoints, plane points) larger in magnitude than this are
-  /// treated like non-finite values: at 1e12 the spacing of doubles is ~1e-4, useless for
-  /// geometry, and squares start to overflow near 1e154. Range > 0, default 1e12.
-  double max_abs_coordinate = 1e12;
+  /// treated like non-finite values (see kMaxAbsCoordinate). Range > 0, default 1e12.
+  double max_abs_coordinate = kMaxAbsCoordinate;
   /// Plane normals shorter than this (before renormalisation) are treated as zero: the plane is
   /// dropped. Range [0, 1), default 1e-12.
   double min_normal_length = 1e-12;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -54,6 +55,16 @@ CaseRun RunCase(const HostileCase& c, const fs::path& dir, const fs::path& io_di
   return run;
 }
 
+/// True when `text` holds more than 20 digits in a row (a double printed with %f or to_string).
+bool HasLongDigitRun(const std::string& text) {
+  int run = 0;
+  for (const char ch : text) {
+    run = std::isdigit(static_cast<unsigned char>(ch)) != 0 ? run + 1 : 0;
+    if (run > 20) return true;
+  }
+  return false;
+}
+
 /// Verdict counts by kind, printed after all cases ran in this process.
 std::map<std::string, std::map<int, int>>& Tally() {
   static std::map<std::string, std::map<int, int>> tally;
@@ -79,13 +90,14 @@ TEST_P(Robustness, KeepsTheContract) {
 
   const CaseRun run = RunCase(c, dir, io_dir);
   const auto after = Snapshot(dir);
-  ++Tally()[c.kind][c.exit_code];
+  RecordVerdict(c.kind, c.exit_code);
 
   EXPECT_EQ(run.signal, 0) << "killed by signal " << run.signal << "\n" << run.err;
   EXPECT_EQ(run.exit_code, c.exit_code) << c.args << "\n" << run.err;
   if (c.exit_code != 0) {
     EXPECT_NE(run.err.find("linesurf: error: "), std::string::npos) << run.err;
   }
+  EXPECT_FALSE(HasLongDigitRun(run.err)) << "a number printed with too many digits:\n" << run.err;
   for (const std::string& part : c.message) {
     EXPECT_NE(run.err.find(part), std::string::npos) << "stderr lacks '" << part << "':\n"
                                                      << run.err;
@@ -147,9 +159,11 @@ const bool kTallyInstalled = [] {
 
 }  // namespace
 
+void RecordVerdict(const std::string& kind, int exit_code) { ++Tally()[kind][exit_code]; }
+
 std::vector<HostileCase> AllHostileCases() {
   std::vector<HostileCase> all;
-  for (auto generator : {OutputPathCases}) {
+  for (auto generator : {InputCases, OptionCases, OutputPathCases}) {
     for (HostileCase& c : generator()) all.push_back(std::move(c));
   }
   return all;

@@ -27,6 +27,10 @@ struct HostileCase {
   std::string stdout_to;
 };
 
+/// Counts one case of `kind` whose contract is `exit_code` (for the library API: the exit code
+/// the CLI gives its ErrorCode) in the table printed at the end of the run.
+void RecordVerdict(const std::string& kind, int exit_code);
+
 /// Helpers the generators share.
 void WriteFile(const std::filesystem::path& path, const std::string& content);
 /// A small valid scene: the synthetic cube (12 edges, viewpoints), as reference JSON.

@@ -8,6 +8,8 @@
 namespace linesurf::robustness {
 
 std::vector<HostileCase> OutputPathCases();
+std::vector<HostileCase> InputCases();
+std::vector<HostileCase> OptionCases();
 
 /// Every case of every kind.
 std::vector<HostileCase> AllHostileCases();

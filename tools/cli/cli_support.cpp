@@ -22,9 +22,9 @@ extern "C" void HandleSignal(int /*signal*/) { g_interrupted.store(true); }
 int ExitCodeFor(ErrorCode code) {
   switch (code) {
     case ErrorCode::kInvalidOptions: return kExitUsage;
-    case ErrorCode::kInvalidInput:
-    case ErrorCode::kDegenerate: return kExitInvalidInput;
+    case ErrorCode::kInvalidInput: return kExitInvalidInput;
     case ErrorCode::kCancelled: return kExitCancelled;
+    case ErrorCode::kDegenerate:  // valid input, but nothing to compute from (e.g. no plane)
     case ErrorCode::kSolverFailed:
     case ErrorCode::kResourceExhausted: return kExitFailed;
     case ErrorCode::kInternal: return kExitInternal;
@@ -35,6 +35,17 @@ int ExitCodeFor(ErrorCode code) {
 int ReportError(const Error& error) {
   std::cerr << "linesurf: error: " << error.ToString() << "\n";
   return ExitCodeFor(error.code);
+}
+
+int ReportError(const Error& error, const std::filesystem::path& file) {
+  // An option out of range is not the file's fault; a message that names the file already is.
+  if (error.code == ErrorCode::kInvalidOptions ||
+      error.message.find(file.string()) != std::string::npos) {
+    return ReportError(error);
+  }
+  Error named = error;
+  named.message = file.string() + ": " + error.message;
+  return ReportError(named);
 }
 
 void ConfigureRunContext(const CommonOptions& common, RunContext& ctx) {

@@ -25,6 +25,9 @@ enum ExitCode : int {
   kExitInternal = 70,
 };
 
+/// Largest --threads accepted.
+constexpr int kMaxThreads = 256;
+
 /// Options every subcommand shares.
 struct CommonOptions {
   bool quiet = false;
@@ -41,6 +44,9 @@ struct Command {
 int ExitCodeFor(ErrorCode code);
 /// Prints "linesurf: error: <message>" to stderr and returns the exit code for `error`.
 int ReportError(const Error& error);
+/// ReportError for an error of a stage that worked on the content of `file` (sanitation,
+/// detection, reconstruction, evaluation): the message names the file when it does not yet.
+int ReportError(const Error& error, const std::filesystem::path& file);
 /// A RunContext whose progress goes to stderr (unless quiet) and whose cancel flag follows
 /// SIGINT/SIGTERM.
 void ConfigureRunContext(const CommonOptions& common, RunContext& ctx);

@@ -47,7 +47,7 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
     Scene scene = std::move(read->scene);
     if (args->sanitize) {
       auto sanitized = pipeline::SanitizeScene(std::move(scene), pipeline::SanitizeOptions{});
-      if (!sanitized) return ReportError(sanitized.error());
+      if (!sanitized) return ReportError(sanitized.error(), args->scene.input);
       for (const std::string& w : sanitized->warnings) PrintWarning(common, "sanitation: " + w);
       scene = std::move(sanitized->scene);
     }

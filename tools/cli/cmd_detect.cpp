@@ -86,7 +86,7 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   ConfigureRunContext(common, ctx);
   Expected<pipeline::DetectedScene> detected =
       pipeline::SanitizeAndDetectPlanes(std::move(read->scene), {}, args.options, ctx);
-  if (!detected) return ReportError(detected.error());
+  if (!detected) return ReportError(detected.error(), args.source.input);
   for (const std::string& w : detected->warnings) PrintWarning(common, w);
   const Scene& scene = detected->scene;
   const PlaneDetectionStats& st = detected->detection_stats;

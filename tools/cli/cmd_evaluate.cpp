@@ -170,7 +170,10 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
       }
     }
     auto result = EvaluateMesh(*result_mesh, *gt_mesh, args.options, viewpoints, &ctx);
-    if (!result) return ReportError(result.error());
+    if (!result) {  // the library says "ground truth mesh: ..." or speaks of the result
+      const bool of_gt = result.error().message.rfind("ground truth", 0) == 0;
+      return ReportError(result.error(), of_gt ? args.gt_path : args.result_path);
+    }
     if (table) PrintTable(args, *result);
     json = ToJson(args, *result);
   }
@@ -222,7 +225,7 @@ Command AddEvaluateCommand(CLI::App& app, CommonOptions& common) {
       ->add_option("--epsilon",
                    args->detection.epsilon,
                    "eps of the figures, scene units (unset: auto, estimated from the data)")
-      ->check(CLI::PositiveNumber);
+      ->check(Above(0.0));
   cmd.app->add_option(
       "--visible-from",
       args->visible_from,

@@ -197,7 +197,7 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
     } else {
       PrintText(info, args->scene.input);
     }
-    return sanitized ? kExitOk : ReportError(sanitized.error());
+    return sanitized ? kExitOk : ReportError(sanitized.error(), args->scene.input);
   };
   return cmd;
 }

@@ -5,6 +5,7 @@
 #include "engine/io/mesh_io.h"
 #include "engine/io/reference_json.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/gen/synthesize.h"
 #include "tools/gen/synthetic_meta.h"
@@ -110,12 +111,12 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
       ->default_val(0);
   cmd.app->add_option("--size", args->spec.size, "city: number of buildings (0 = 16)")
       ->default_val(0)
-      ->check(CLI::Range(0, 100000));
+      ->check(Between(0, 100000));
   cmd.app->add_option("--noise", args->spec.noise_sigma,
                       "Endpoint noise in metres (Gaussian sigma, or ball radius with "
                       "--noise-model ball)")
       ->default_val(0.0)
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(Between(0.0, 10.0));
   cmd.app
       ->add_option("--noise-model", args->noise_model,
                    "gaussian, ball (uniform in a ball) or depth (Line3D++-like: twice the spread "
@@ -131,21 +132,21 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
   cmd.app->add_option("--outliers", args->spec.outlier_fraction,
                       "Fraction of output segments that are outliers, 0..0.9")
       ->default_val(0.0)
-      ->check(CLI::Range(0.0, 0.9));
+      ->check(Between(0.0, 0.9));
   cmd.app->add_option("--outlier-count", args->outlier_count,
                       "Exact number of outliers (overrides --outliers)")
-      ->check(CLI::Range(0, 1000000));
+      ->check(Between(0, 1000000));
   cmd.app->add_option("--max-pieces", args->max_pieces,
                       "Cut each true line into 1..N pieces (default: cube 1, others 3)")
-      ->check(CLI::Range(1, 16));
+      ->check(Between(1, 16));
   cmd.app->add_option("--max-trim", args->max_trim,
                       "Trim up to this fraction of each piece at each end (default: cube 0, "
                       "others 0.1)")
-      ->check(CLI::Range(0.0, 0.4));
+      ->check(Between(0.0, 0.4));
   cmd.app->add_option("--max-views", args->spec.max_views,
                       "Views per segment: nearest viewpoints that see it, at most N")
       ->default_val(8)
-      ->check(CLI::Range(1, 64));
+      ->check(Between(1, 64));
   cmd.app->add_option("--offset", args->spec.offset,
                       "Metres added to x and y of everything (georeferenced-like coordinates)")
       ->default_val(0.0);
@@ -155,7 +156,7 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
   cmd.app->add_option("--max-view-trim", args->spec.max_view_trim,
                       "Residual split: share of a segment a camera may miss at each end")
       ->default_val(0.25)
-      ->check(CLI::Range(0.0, 0.45));
+      ->check(Between(0.0, 0.45));
   cmd.app->add_option("-o,--output", args->out_dir, "Output directory (created if needed)")
       ->required();
   cmd.run = [args, &common] { return RunSynth(*args, common); };

@@ -1,5 +1,7 @@
 #include "tools/cli/detection_options.h"
 
+#include "tools/cli/option_checks.h"
+
 namespace linesurf::cli {
 
 void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& options) {
@@ -7,38 +9,38 @@ void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& o
       .Add("epsilon",
            options.epsilon,
            "Inlier tolerance eps, scene units (unset: auto, estimated from the data)")
-      ->check(CLI::PositiveNumber);
+      ->check(Above(0.0));
   registry
       .Add("epsilon-over-noise",
            options.epsilon_over_noise,
            "eps auto: eps = this x the robust noise scale of the plane residuals")
-      ->check(CLI::Range(1e-9, 20.0));
+      ->check(Between(1e-9, 20.0));
   registry.Add("relative-epsilon",
                options.relative_epsilon,
                "eps as a fraction of the scene diagonal (overrides --epsilon)");
   registry.Add("iterations", options.iterations, "Max candidate pairs per plane")
-      ->check(CLI::PositiveNumber);
+      ->check(Above(0.0));
   registry
       .Add("max-planes", options.max_planes, "Max number of planes (per block with --block-size)")
-      ->check(CLI::PositiveNumber);
+      ->check(Above(0.0));
   registry.Add("min-support", options.min_support, "Min inlier segments per plane");
   registry
       .Add("collinear-tolerance",
            options.collinear_tolerance,
            "Segments on one line within this x eps are detected as one (0 = off)")
-      ->check(CLI::Range(0.0, 0.5));
+      ->check(Between(0.0, 0.5));
   registry
       .Add("block-size",
            options.block_size,
            "Per-block detection: cube side, scene units (0 = whole scene at once)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(AtLeast(0.0));
   registry.Add("block-halo", options.block_halo, "Halo of a block, fraction of its side")
-      ->check(CLI::Range(0.0, 0.49));
+      ->check(Between(0.0, 0.49));
   registry
       .Add("block-max-segments",
            options.block_max_segments,
            "Split a block with more lines than this into 8, recursively (0 = never)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(AtLeast(0.0));
 }
 
 }  // namespace linesurf::cli

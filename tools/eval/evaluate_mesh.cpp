@@ -1,5 +1,10 @@
 #include "tools/eval/evaluate_mesh.h"
 
+#include "engine/core/coordinate_bound.h"
+#include "engine/core/exception.h"
+#include "engine/core/parallel.h"
+#include "engine/core/rng.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -11,14 +16,12 @@
 #include <cmath>
 #include <string>
 
-#include "engine/core/exception.h"
-#include "engine/core/parallel.h"
-#include "engine/core/rng.h"
-
 namespace linesurf {
 namespace {
 
 constexpr const char* kStage = "evaluate_mesh";
+/// More samples than this take gigabytes and give shares no steadier than +-0.01 %.
+constexpr std::size_t kMaxSamplesPerMesh = 10000000;
 /// Samples per parallel task; fixed so chunking never depends on the thread count.
 constexpr std::size_t kSampleGrain = 1024;
 /// Stream tags of the two sample sets.
@@ -205,8 +208,10 @@ Status EvaluationOptions::Validate() const {
       LINESURF_THROW_IF(i > 0 && !(thresholds[i] > thresholds[i - 1]), kInvalidOptions,
                         "evaluation_options", "thresholds must be increasing");
     }
-    LINESURF_THROW_IF(samples_per_mesh < 1, kInvalidOptions, "evaluation_options",
-                      "samples_per_mesh must be >= 1");
+    LINESURF_THROW_IF(samples_per_mesh < 1 || samples_per_mesh > kMaxSamplesPerMesh,
+                      kInvalidOptions,
+                      "evaluation_options",
+                      "samples_per_mesh must be in [1, " << kMaxSamplesPerMesh << "]");
     LINESURF_THROW_IF(!(visibility_offset > 0.0) || !std::isfinite(visibility_offset),
                       kInvalidOptions, "evaluation_options", "visibility_offset must be > 0");
   });
@@ -217,6 +222,14 @@ Expected<EvaluationResult> EvaluateMesh(const PolygonMesh& result, const Polygon
                                         const std::optional<std::vector<Vec3>>& visible_from,
                                         const RunContext* ctx) noexcept {
   if (auto valid = options.Validate(); !valid) return valid.error();
+  // Beyond the coordinate bound the exact fallback of CGAL meets overflowed doubles (GMP raises
+  // SIGFPE on converting inf): refuse such meshes before any geometry.
+  for (const auto& [mesh, name] :
+       {std::pair{&result, "result"}, std::pair{&ground_truth, "ground truth"}}) {
+    if (const auto violation = CoordinateBoundViolation(*mesh)) {
+      return Error{ErrorCode::kInvalidInput, kStage, std::string(name) + " mesh: " + *violation};
+    }
+  }
   return CatchAll(kStage, [&] {
     if (ctx == nullptr) return Evaluate(result, ground_truth, options, visible_from, ctx);
     return RunInArena(*ctx, [&] { return Evaluate(result, ground_truth, options, visible_from, ctx); });

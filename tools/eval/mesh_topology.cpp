@@ -15,6 +15,7 @@
 #include <tuple>
 #include <vector>
 
+#include "engine/core/coordinate_bound.h"
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 
@@ -207,6 +208,9 @@ MeshTopology Check(const PolygonMesh& mesh) {
 }  // namespace
 
 Expected<MeshTopology> CheckMeshTopology(const PolygonMesh& mesh) noexcept {
+  if (const auto violation = CoordinateBoundViolation(mesh)) {
+    return Error{ErrorCode::kInvalidInput, kStage, "mesh: " + *violation};
+  }
   return CatchAll(kStage, [&] { return Check(mesh); });
 }
 

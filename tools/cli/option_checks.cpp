@@ -1,0 +1,64 @@
+#include "tools/cli/option_checks.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+namespace linesurf::cli {
+namespace {
+
+std::string Num(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.6g", v);
+  return text;
+}
+
+/// A validator that parses the value as a double and accepts it when `ok` holds.
+CLI::Validator NumberCheck(const std::function<bool(double)>& ok, const std::string& what) {
+  return CLI::Validator(
+      [ok, what](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value)) return "'" + text + "' is not a number";
+        if (!ok(value)) return "must be " + what + ", got " + text;
+        return {};
+      },
+      "");
+}
+
+}  // namespace
+
+CLI::Validator AtLeast(double lo) {
+  return NumberCheck([lo](double v) { return v >= lo; }, ">= " + Num(lo));
+}
+
+CLI::Validator Above(double lo) {
+  return NumberCheck([lo](double v) { return v > lo; }, "> " + Num(lo));
+}
+
+CLI::Validator Between(double lo, double hi) {
+  return NumberCheck([lo, hi](double v) { return v >= lo && v <= hi; },
+                     "in [" + Num(lo) + ", " + Num(hi) + "]");
+}
+
+void AddTypeChecks(CLI::App& root) {
+  for (CLI::Option* option : root.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type == "UINT") {
+      option->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const auto first = text.find_first_not_of(" \t");
+            if (first != std::string::npos && text[first] == '-') {
+              return "must be >= 0, got " + text;
+            }
+            return {};
+          },
+          ""));
+    } else if (type == "FLOAT") {
+      option->check(NumberCheck([](double v) { return std::isfinite(v); }, "a finite number"));
+    }
+  }
+  for (CLI::App* sub : root.get_subcommands([](CLI::App*) { return true; })) AddTypeChecks(*sub);
+}
+
+}  // namespace linesurf::cli
