@@ -1,6 +1,7 @@
 #pragma once
 // Runs work inside a oneTBB arena sized from RunContext::num_threads (never global_control).
 
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
@@ -10,12 +11,16 @@
 
 namespace linesurf {
 
-/// Threads an arena gets for `requested` (0 = automatic). Requests above the machine's
-/// concurrency are capped: oneTBB would otherwise print a warning on stderr, and results do not
-/// depend on the thread count anyway.
+/// Threads an arena gets for `requested` (0 = automatic: the machine's concurrency). A request
+/// is honoured up to the process's worker limit, tbb::global_control::max_allowed_parallelism,
+/// which is the machine's concurrency unless the host raised it: an arena of more threads than
+/// that limit would still run on the limit's threads (oneTBB caps its workers and warns on
+/// stderr), so oversubscription is the host's decision (the CLI's -j N, the thread tests).
 inline int ArenaConcurrency(int requested) {
-  const int available = tbb::info::default_concurrency();
-  return requested > 0 ? std::min(requested, available) : available;
+  if (requested <= 0) return tbb::info::default_concurrency();
+  const auto limit =
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  return static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(requested), limit));
 }
 
 template <typename Fn>

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/rng.h"
+#include "tests/support/thread_count.h"
 
 namespace linesurf {
 namespace {
@@ -210,6 +211,7 @@ PlaneDetectionOptions GridOptions() {
 }
 
 TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
+  const linesurf::testing::RealThreadCounts real_threads;
   const Scene scene = CubeGrid();
   // Whole scene; blocks cutting the cubes; one grid block split (octree) down to <= 40 lines.
   for (const auto& [block_size, max_segments] : {std::pair{0.0, 0}, {2.0, 0}, {20.0, 40}}) {
@@ -219,7 +221,9 @@ TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
     const PlaneDetectionResult r1 = Detect(scene, o, 1);
     ASSERT_GT(r1.planes.size(), 10u);
     EXPECT_TRUE(max_segments == 0 || r1.stats.blocks > 1);
-    for (int threads : {2, 8}) ExpectSameResult(Detect(scene, o, threads), r1);
+    for (int threads : linesurf::testing::kThreadCounts) {
+      ExpectSameResult(Detect(scene, o, threads), r1);
+    }
   }
 }
 

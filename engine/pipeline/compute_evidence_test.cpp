@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/pipeline/grid_complex_for_test.h"
+#include "tests/support/thread_count.h"
 
 namespace linesurf::pipeline {
 namespace {
@@ -160,8 +161,9 @@ TEST(ComputeEvidence, IdenticalForAnyThreadCount) {
   scene.viewpoints.push_back(Vec3(3.1, 3.2, 0.5));
   EnergyOptions o;
   o.sigma = 0.1;
+  const linesurf::testing::RealThreadCounts real_threads;
   const EvidenceResult one = Compute(g, scene, o, 1);
-  for (const int threads : {2, 8}) {
+  for (const int threads : linesurf::testing::kThreadCounts) {
     const EvidenceResult many = Compute(g, scene, o, threads);
     EXPECT_EQ(one.energy.cost_if_empty.raw(), many.energy.cost_if_empty.raw());
     EXPECT_EQ(one.energy.cost_if_full.raw(), many.energy.cost_if_full.raw());

@@ -11,6 +11,7 @@
 #include "partition/arrangement/cell_geometry.h"
 #include "partition/arrangement/exact_predicates.h"
 #include "partition/arrangement/validate_cell_complex.h"
+#include "tests/support/thread_count.h"
 
 namespace linesurf::partition {
 namespace {
@@ -100,7 +101,7 @@ TEST(BuildCellComplex, AxisAlignedGridCounts) {
     }
     const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
     const std::size_t A = a, B = b, C = c;
-    SCOPED_TRACE(testing::Message() << a << "," << b << "," << c);
+    SCOPED_TRACE(::testing::Message() << a << "," << b << "," << c);
     EXPECT_EQ(r.stats.planes_used, A + B + C);
     EXPECT_EQ(r.complex.NumCells(), (A + 1) * (B + 1) * (C + 1));
     EXPECT_EQ(r.complex.NumVertices(), (A + 2) * (B + 2) * (C + 2));
@@ -164,7 +165,7 @@ TEST(BuildCellComplex, RandomPlanesInGeneralPosition) {
       }
     }
     const auto r = Build(box, planes);
-    SCOPED_TRACE(testing::Message() << "n = " << n);
+    SCOPED_TRACE(::testing::Message() << "n = " << n);
     EXPECT_EQ(r.stats.planes_used, n);
     EXPECT_EQ(r.complex.NumCells(), 1 + n + lines + points);
     ExpectValidWithVolume(r.complex);
@@ -296,7 +297,8 @@ TEST(BuildCellComplexes, IdenticalForAnyThreadCount) {
     }
   }
   std::vector<std::vector<CellComplexResult>> runs;
-  for (const int threads : {1, 2, 8}) {
+  const linesurf::testing::RealThreadCounts real_threads;
+  for (const int threads : {1, 2, 3, 8}) {
     RunContext ctx;
     ctx.num_threads = threads;
     auto r = BuildCellComplexes(boxes, planes, {}, ctx);

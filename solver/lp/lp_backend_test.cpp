@@ -9,6 +9,7 @@
 
 #include "solver/lp/backends/cbc/cbc_backend.h"
 #include "solver/testing/random_energy.h"
+#include "tests/support/thread_count.h"
 
 namespace linesurf::solver {
 namespace {
@@ -259,9 +260,10 @@ TEST(SolveLabeling, PdhgIsIdenticalForAnyThreadCount) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 14;  // LP of ~16k columns: several parallel chunks
   const EnergyInput e = testing::GridEnergy(spec);
+  const linesurf::testing::RealThreadCounts real_threads;
   const LabelingResult one = MustSolve(e, "pdhg", 1);
   ASSERT_GT(one.lp_columns, 10000u);
-  for (int threads : {2, 8}) {
+  for (int threads : linesurf::testing::kThreadCounts) {
     const LabelingResult many = MustSolve(e, "pdhg", threads);
     EXPECT_EQ(many.labels, one.labels) << threads;
     EXPECT_EQ(many.relaxed, one.relaxed) << threads;  // bitwise

@@ -11,6 +11,7 @@
 #include "engine/io/mesh_io.h"
 #include "engine/pipeline/reconstruct.h"
 #include "tests/support/test_paths.h"
+#include "tests/support/thread_count.h"
 #include "tools/eval/evaluate_mesh.h"
 #include "tools/gen/synthesize.h"
 
@@ -119,7 +120,8 @@ TEST(Reconstruct, SameSeedGivesByteIdenticalMeshesForAnyThreadCount) {
   o.use_given_planes = false;  // detection included
   const auto dir = testing::FreshTempDir();
   std::string first;
-  for (const int threads : {1, 2, 8}) {
+  const linesurf::testing::RealThreadCounts real_threads;
+  for (const int threads : {1, 2, 3, 8}) {
     o.num_threads = threads;
     const pipeline::ReconstructResult r = RunReconstruct(s.scene, o, threads);
     const auto path = dir / ("house_" + std::to_string(threads) + ".ply");
