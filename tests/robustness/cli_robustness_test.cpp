@@ -11,6 +11,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <ostream>
 #include <map>
 #include <set>
 #include <string>
@@ -76,6 +77,13 @@ std::map<std::string, int>& Failures() {
 }
 
 class Robustness : public ::testing::TestWithParam<HostileCase> {};
+
+}  // namespace
+
+/// gtest prints a case by its name (test names and CTest stay readable).
+void PrintTo(const HostileCase& c, std::ostream* os) { *os << c.name; }
+
+namespace {
 
 TEST_P(Robustness, KeepsTheContract) {
   const HostileCase& c = GetParam();

@@ -274,10 +274,7 @@ std::vector<HostileCase> MeshCases() {
 std::vector<HostileCase> InputCases() {
   std::vector<HostileCase> cases;
   for (const auto& [command, args] : kSceneCommands) {
-    const bool takes_cameras = std::string(command) == "info" || std::string(command) == "convert";
     for (const BadScene& s : BadScenes()) {
-      // detect and reconstruct take no --nvm/--colmap yet: their Line3D++ cases are info's.
-      if (!s.extra_args.empty() && !takes_cameras) continue;
       cases.push_back(SceneCase("malformed file", s, command, args));
     }
     for (const BadScene& s : DegenerateScenes()) {

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,8 @@ std::vector<ApiCase> ApiCases() {
   add("given_planes_none", CubeScene(), o, ErrorCode::kInvalidInput);
   return cases;
 }
+
+void PrintTo(const ApiCase& c, std::ostream* os) { *os << c.name; }
 
 class LibraryApi : public ::testing::TestWithParam<ApiCase> {};
 

@@ -111,7 +111,7 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   ConfigureRunContext(common, ctx);
   Expected<pipeline::ReconstructResult> result =
       pipeline::Reconstruct(read->scene, options, ctx);
-  if (!result) return ReportError(result.error(), args.input);
+  if (!result) return ReportError(result.error(), args.source.input);
   for (const std::string& w : result->warnings) PrintWarning(common, w);
   // The mesh must pass the self-intersection check of `evaluate` (issue 12): never written
   // in silence when it does not.

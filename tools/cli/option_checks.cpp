@@ -23,7 +23,7 @@ CLI::Validator NumberCheck(const std::function<bool(double)>& ok, const std::str
         if (!ok(value)) return "must be " + what + ", got " + text;
         return {};
       },
-      "");
+      what);
 }
 
 }  // namespace
@@ -43,7 +43,9 @@ CLI::Validator Between(double lo, double hi) {
 
 void AddTypeChecks(CLI::App& root) {
   for (CLI::Option* option : root.get_options()) {
-    const std::string type = option->get_type_name();
+    // "FLOAT" or "UINT", followed by ":<check>" once a check with a description is added.
+    const std::string full_type = option->get_type_name();
+    const std::string type = full_type.substr(0, full_type.find(':'));
     if (type == "UINT") {
       option->check(CLI::Validator(
           [](std::string& text) -> std::string {
@@ -55,7 +57,9 @@ void AddTypeChecks(CLI::App& root) {
           },
           ""));
     } else if (type == "FLOAT") {
-      option->check(NumberCheck([](double v) { return std::isfinite(v); }, "a finite number"));
+      CLI::Validator finite =
+          NumberCheck([](double v) { return std::isfinite(v); }, "a finite number");
+      option->check(finite.description(""));
     }
   }
   for (CLI::App* sub : root.get_subcommands([](CLI::App*) { return true; })) AddTypeChecks(*sub);
