@@ -10,6 +10,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
+#include "tools/cli/option_checks.h"
 #include "tools/cli/surface_quality_json.h"
 #include "tools/eval/evaluate_mesh.h"
 
