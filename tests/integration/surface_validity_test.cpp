@@ -1,6 +1,6 @@
 // Issue 12, must-show 5: reconstructions with default options that `linesurf evaluate` itself
 // reports closed, 2-manifold and not self-intersecting: the `self-intersecting-floor` reproducer
-// (../shared/data/repro).
+// (../shared/data/repro) and `linesurf synth floor` seeds 1-20.
 
 #include "tests/support/cli_runner.h"
 #include "tests/support/test_paths.h"
@@ -48,6 +48,18 @@ TEST_F(SurfaceValidity, SelfIntersectingFloorReproducer) {
   }
   ExpectValidSurface(input);
 }
+
+class SynthFloorSurface : public SurfaceValidity, public ::testing::WithParamInterface<int> {};
+
+TEST_P(SynthFloorSurface, IsClosedManifoldAndNotSelfIntersecting) {
+  const std::filesystem::path scene = dir_ / "floor";
+  const CliRunResult r = RunLinesurf(
+      "-q synth floor --seed " + std::to_string(GetParam()) + " -o " + ShellQuote(scene), dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ExpectValidSurface(scene / "lines.json");
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds1To20, SynthFloorSurface, ::testing::Range(1, 21));
 
 }  // namespace
 }  // namespace linesurf
