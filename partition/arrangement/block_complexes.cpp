@@ -85,6 +85,14 @@ void Finish(const BlockGrid& grid,
 
 }  // namespace
 
+std::vector<std::size_t> GlobalCellOffsets(const BlockComplexes& complexes) {
+  std::vector<std::size_t> offsets(complexes.blocks.size() + 1, 0);
+  for (std::size_t b = 0; b < complexes.blocks.size(); ++b) {
+    offsets[b + 1] = offsets[b] + complexes.blocks[b].complex.NumCells();
+  }
+  return offsets;
+}
+
 Eigen::Vector4d BlockComplexes::Coefficients(PlaneKey key) const {
   if (!key.IsFace()) return plane_coefficients[key.plane().index()];
   Eigen::Vector4d out = Eigen::Vector4d::Zero();

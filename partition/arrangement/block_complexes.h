@@ -116,6 +116,11 @@ struct BlockComplexes {
   [[nodiscard]] Eigen::Vector4d Coefficients(PlaneKey key) const;
 };
 
+/// Global cell ids of the block engine: cell c of block b is offsets[b] + c.index(), blocks in
+/// `complexes.blocks` order. `offsets` has blocks.size() + 1 entries; the last is the total
+/// number of cells. Evidence, solve and stitch all number cells this way.
+[[nodiscard]] std::vector<std::size_t> GlobalCellOffsets(const BlockComplexes& complexes);
+
 /// Builds the complex of every base block of `grid` (blocks in parallel inside an arena from
 /// ctx.num_threads), each split by the planes of `regions` that reach it, and the seam overlay
 /// of every shared face (faces in parallel). Identical for any thread count. Errors: those of

@@ -94,6 +94,20 @@ TEST(BuildBlockComplexes, RandomPlanesEverywhereAreValidAndConforming) {
   }
 }
 
+TEST(GlobalCellOffsets, NumberTheCellsOfEveryBlockContiguouslyInBlockOrder) {
+  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const BlockGrid grid = MakeGrid(box, 0.7);
+  const std::vector<Plane3> planes = RandomPlanes(6, box, 5);
+  const BlockComplexes cx = Build(grid, planes, std::vector(planes.size(), AllBlocks(grid)));
+  const std::vector<std::size_t> offsets = GlobalCellOffsets(cx);
+  ASSERT_EQ(offsets.size(), cx.blocks.size() + 1);
+  EXPECT_EQ(offsets.front(), 0u);
+  for (std::size_t b = 0; b < cx.blocks.size(); ++b) {
+    EXPECT_EQ(offsets[b + 1] - offsets[b], cx.blocks[b].complex.NumCells()) << "block " << b;
+  }
+  EXPECT_EQ(offsets.back(), cx.stats.cells);
+}
+
 // Random regions: neighbouring blocks are cut by different planes, so the overlay must intersect
 // different subdivisions of each face.
 TEST(BuildBlockComplexes, DifferentPlanesOnTheTwoSidesOfSeamsAreOverlaidExactly) {
