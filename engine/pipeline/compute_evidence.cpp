@@ -2,28 +2,20 @@
 
 #include "engine/core/median_segment_length.h"
 
-#include <Eigen/Geometry>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 #include "engine/core/exception.h"
-#include "engine/core/parallel.h"
+#include "engine/pipeline/complex_regularisation.h"
+#include "engine/pipeline/segment_evidence.h"
 #include "partition/arrangement/cell_locator.h"
 
 namespace linesurf::pipeline {
 namespace {
 
 constexpr const char* kStage = "evidence";
-/// Fixed-point scale of the accumulated weights: 2^-32 resolution, totals up to 2^31.
+/// Fixed-point scale of the accumulated weights (segment_evidence.cpp): 2^-32 resolution.
 constexpr double kFixedPointScale = 4294967296.0;
 /// Largest fixed-point total: every accumulated cost must stay below it, or the sums wrap.
 constexpr double kFixedPointLimit = 9.2233720368547758e18 / kFixedPointScale;  // 2^63 / scale
@@ -32,356 +24,35 @@ constexpr double kMaxWeight = 1e6;
 /// Smallest sigma, as a fraction of the box diagonal: finer scales resolve nothing and make the
 /// per-length costs (edge weight * length / sigma) overflow.
 constexpr double kMinSigmaRelative = 1e-9;
-/// Segments per parallel work item (fixed, so chunking never depends on the thread count).
-constexpr std::size_t kSegmentChunk = 32;
-/// Sample points are moved off their plane(s) by this fraction of the box diagonal before
-/// point location, so rounding of the projection cannot put them on the wrong side; the tie
-/// directions passed to the locator settle points that still land exactly on a plane.
-constexpr double kSideOffsetRelative = 1e-7;
-/// A viewpoint closer to the segment's plane than this fraction of its distance to the sample
-/// sees the plane edge-on: that sample carries no side information.
-constexpr double kGrazingSine = 1e-6;
-/// Segments shorter than this fraction of sigma after projection carry no primitive evidence.
-constexpr double kMinProjectedLengthRelative = 1e-9;
 
-std::int64_t ToFixed(double w) { return std::llround(w * kFixedPointScale); }
-double FromFixed(std::int64_t w) { return static_cast<double>(w) / kFixedPointScale; }
+/// One complex: its cells and facets, walked with its locator.
+class ComplexSpace final : public EvidenceSpace {
+ public:
+  explicit ComplexSpace(const CellComplex& cx) : cx_(cx), locator_(cx) {}
+  const Box3& box() const override { return cx_.box; }
+  std::size_t NumCells() const override { return cx_.NumCells(); }
+  std::size_t NumFacets() const override { return cx_.NumFacets(); }
+  std::pair<CellId, CellId> FacetCells(std::size_t f) const override {
+    return {cx_.facet_positive_cell[FacetId(f)], cx_.facet_negative_cell[FacetId(f)]};
+  }
+  double FacetArea(std::size_t f) const override { return pipeline::FacetArea(cx_, FacetId(f)); }
+  CellId Locate(const Vec3& p, std::span<const Vec3> ties, CellId hint) const override {
+    return locator_.Locate(p, ties, hint);
+  }
+  void Walk(const Vec3& from,
+            CellId from_cell,
+            const Vec3& to,
+            CellId to_cell,
+            const FacetVisitor& visit) const override {
+    locator_.WalkSegment(from, from_cell, to, to_cell, [&](FacetId f, double /*t*/) {
+      visit(f.index());
+    });
+  }
 
-void AtomicAdd(std::vector<std::int64_t>& v, std::size_t i, std::int64_t w) {
-  std::atomic_ref<std::int64_t>(v[i]).fetch_add(w, std::memory_order_relaxed);
-}
-
-/// A structural group as found by one sample: up to three cells (sorted, padded invalid).
-struct StructuralEntry {
-  std::array<CellId, 4> cells{};
-  std::int64_t weight = 0;
+ private:
+  const CellComplex& cx_;
+  partition::CellLocator locator_;
 };
-
-struct Accumulators {
-  std::vector<std::int64_t> cost_if_empty;
-  std::vector<std::int64_t> cost_if_full;
-  std::vector<std::int64_t> facet_weight;
-  std::vector<std::vector<StructuralEntry>> structural;  ///< per chunk
-  std::atomic<std::size_t> samples{0}, outside{0}, grazing{0}, walks{0}, crossings{0},
-      parallel_creases{0};
-};
-
-/// Parameters shared by every segment.
-struct Context {
-  const CellComplex& cx;
-  const Scene& scene;
-  const EnergyOptions& options;
-  const partition::CellLocator& locator;
-  const IdVector<ViewpointId, CellId>& viewpoint_cells;
-  double sigma = 1.0;
-  double offset = 0.0;
-  Accumulators& acc;
-};
-
-Vec3 ProjectOntoPlane(const Plane3& plane, const Vec3& p) {
-  return p - plane.SignedDistance(p) * plane.normal;
-}
-
-/// Clips the sight segment from `v` to `target` to the box; returns the start point and its
-/// cell, or an invalid cell when the segment misses the box.
-std::pair<Vec3, CellId> SightStart(const Context& c, ViewpointId view, const Vec3& target) {
-  const Vec3& v = c.scene.viewpoints[view];
-  if (c.viewpoint_cells[view].IsValid()) return {v, c.viewpoint_cells[view]};
-  const Vec3 d = target - v;
-  double t0 = 0.0;
-  double t1 = 1.0;
-  for (int a = 0; a < 3; ++a) {
-    if (d[a] == 0.0) {
-      if (v[a] < c.cx.box.min[a] || v[a] > c.cx.box.max[a]) return {v, CellId::Invalid()};
-      continue;
-    }
-    double ta = (c.cx.box.min[a] - v[a]) / d[a];
-    double tb = (c.cx.box.max[a] - v[a]) / d[a];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-  }
-  if (t0 >= t1) return {v, CellId::Invalid()};
-  // Step a little inside so the start point is strictly in the box.
-  const double t = std::min(t0 + 1e-9 * (t1 - t0) + c.offset / std::max(d.norm(), c.offset), t1);
-  const Vec3 start = v + t * d;
-  if (!c.cx.box.Contains(start)) return {v, CellId::Invalid()};
-  const std::array<Vec3, 1> ties{d};
-  return {start, c.locator.Locate(start, ties)};
-}
-
-/// Walks the sight ray from viewpoint `view` to `target` (in cell `target_cell`) and adds
-/// `weight` to every facet crossed.
-void AddSightRay(const Context& c, ViewpointId view, const Vec3& target, CellId target_cell,
-                 std::int64_t weight) {
-  if (weight == 0 || !target_cell.IsValid()) return;
-  const auto [start, start_cell] = SightStart(c, view, target);
-  if (!start_cell.IsValid()) return;
-  c.acc.walks.fetch_add(1, std::memory_order_relaxed);
-  std::size_t crossed = 0;
-  c.locator.WalkSegment(start, start_cell, target, target_cell, [&](FacetId f, double /*t*/) {
-    AtomicAdd(c.acc.facet_weight, f.index(), weight);
-    ++crossed;
-  });
-  c.acc.crossings.fetch_add(crossed, std::memory_order_relaxed);
-}
-
-/// Counts `num_views` samples at `q`; false (and counted as outside) when q is off the box.
-bool CountSample(const Context& c, const Vec3& q, std::size_t num_views) {
-  c.acc.samples.fetch_add(num_views, std::memory_order_relaxed);
-  if (c.cx.box.Contains(q)) return true;
-  c.acc.outside.fetch_add(num_views, std::memory_order_relaxed);
-  return false;
-}
-
-std::int32_t NumSamples(const Context& c, double length) {
-  const double k = std::ceil(c.options.samples_per_sigma * length / c.sigma);
-  return static_cast<std::int32_t>(
-      std::clamp(k, 1.0, static_cast<double>(c.options.max_samples_per_segment)));
-}
-
-/// Textural evidence and visibility of segment `s` projected onto `plane`.
-void AddTextural(const Context& c, SegmentId s, const Plane3& plane, double length_fraction) {
-  const Segment3& seg = c.scene.segments[s];
-  const Vec3 a = ProjectOntoPlane(plane, seg.p1);
-  const Vec3 b = ProjectOntoPlane(plane, seg.p2);
-  const double length = (b - a).norm() * length_fraction;
-  if (length <= kMinProjectedLengthRelative * c.sigma) return;
-  const std::int32_t k_samples = NumSamples(c, length);
-  const double per_sample = length / (k_samples * c.sigma);
-  const std::int64_t w_tex = ToFixed(c.options.textural_weight * per_sample);
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
-  const Vec3& n = plane.normal;
-  const std::array<Vec3, 1> ties_plus{n};
-  const std::array<Vec3, 1> ties_minus{-n};
-  const auto views = c.scene.observations[s];
-  CellId plus;
-  CellId minus;
-  for (std::int32_t k = 0; k < k_samples; ++k) {
-    const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
-    if (!CountSample(c, q, views.size())) continue;
-    const Vec3 q_plus = q + c.offset * n;
-    const Vec3 q_minus = q - c.offset * n;
-    // The previous sample's cells are close: start the location walk there.
-    plus = c.locator.Locate(q_plus, ties_plus, plus);
-    minus = c.locator.Locate(q_minus, ties_minus, minus);
-    for (const ViewpointId v : views) {
-      const Vec3 to_view = c.scene.viewpoints[v] - q;
-      const double side = n.dot(to_view);
-      if (std::abs(side) <= kGrazingSine * to_view.norm()) {
-        c.acc.grazing.fetch_add(1, std::memory_order_relaxed);
-        continue;
-      }
-      const bool view_on_plus = side > 0.0;
-      const CellId behind = view_on_plus ? minus : plus;
-      if (behind.IsValid() && w_tex != 0) AtomicAdd(c.acc.cost_if_empty, behind.index(), w_tex);
-      AddSightRay(c, v, view_on_plus ? q_plus : q_minus, view_on_plus ? plus : minus, w_vis);
-    }
-  }
-}
-
-/// Structural evidence and visibility of segment `s` projected onto the crease p1 ∩ p2.
-void AddStructural(const Context& c, SegmentId s, const Plane3& p1, const Plane3& p2,
-                   std::vector<StructuralEntry>& out) {
-  const Segment3& seg = c.scene.segments[s];
-  const Vec3& n1 = p1.normal;
-  const Vec3& n2 = p2.normal;
-  const double cos12 = n1.dot(n2);
-  const double det = 1.0 - cos12 * cos12;
-  const Vec3 u = n1.cross(n2).normalized();
-  // Closest point of the crease to the segment's midpoint, then the endpoints projected on it.
-  const Vec3 m = seg.Midpoint();
-  const double r1 = p1.SignedDistance(m);
-  const double r2 = p2.SignedDistance(m);
-  const double g1 = (r1 - cos12 * r2) / det;
-  const double g2 = (r2 - cos12 * r1) / det;
-  const Vec3 x0 = m - g1 * n1 - g2 * n2;
-  const Vec3 a = x0 + u * u.dot(seg.p1 - x0);
-  const Vec3 b = x0 + u * u.dot(seg.p2 - x0);
-  const double length = (b - a).norm();
-  if (length <= kMinProjectedLengthRelative * c.sigma) return;
-  // Dual basis of (n1, n2) in their span: n_i . m_j = delta_ij, so s1*m1 + s2*m2 points into
-  // the quadrant (sign s1 of plane 1, sign s2 of plane 2).
-  const Vec3 m1 = (n1 - cos12 * n2) / det;
-  const Vec3 m2 = (n2 - cos12 * n1) / det;
-  std::array<Vec3, 4> quadrant_dir;
-  for (int qd = 0; qd < 4; ++qd) {
-    const double s1 = (qd & 1) != 0 ? -1.0 : 1.0;
-    const double s2 = (qd & 2) != 0 ? -1.0 : 1.0;
-    quadrant_dir[qd] = (s1 * m1 + s2 * m2).normalized();
-  }
-  const std::int32_t k_samples = NumSamples(c, length);
-  const double per_sample = length / (k_samples * c.sigma);
-  const std::int64_t w_str = ToFixed(c.options.structural_weight * per_sample);
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
-  const auto views = c.scene.observations[s];
-  std::array<CellId, 4> previous{};
-  for (std::int32_t k = 0; k < k_samples; ++k) {
-    const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
-    if (!CountSample(c, q, views.size())) continue;
-    std::array<CellId, 4> cells{};
-    std::array<Vec3, 4> points;
-    for (int qd = 0; qd < 4; ++qd) {
-      points[qd] = q + c.offset * quadrant_dir[qd];
-      const std::array<Vec3, 2> ties{quadrant_dir[qd], u};
-      cells[qd] = c.locator.Locate(points[qd], ties, previous[qd]);
-      previous[qd] = cells[qd];
-    }
-    for (const ViewpointId v : views) {
-      const Vec3 to_view = c.scene.viewpoints[v] - q;
-      const double t1 = n1.dot(to_view);
-      const double t2 = n2.dot(to_view);
-      const double grazing = kGrazingSine * to_view.norm();
-      if (std::abs(t1) <= grazing && std::abs(t2) <= grazing) {
-        c.acc.grazing.fetch_add(1, std::memory_order_relaxed);
-        continue;
-      }
-      const int facing = (t1 < 0.0 ? 1 : 0) | (t2 < 0.0 ? 2 : 0);
-      StructuralEntry entry;
-      std::size_t count = 0;
-      for (int qd = 0; qd < 4; ++qd) {
-        const CellId cell = cells[qd];
-        if (!cell.IsValid() || cell == cells[facing]) continue;
-        if (std::find(entry.cells.begin(), entry.cells.begin() + count, cell) !=
-            entry.cells.begin() + count) {
-          continue;
-        }
-        entry.cells[count++] = cell;
-      }
-      if (count > 0 && w_str != 0) {
-        // Insertion sort of at most three ids (std::sort here trips GCC 12's -Warray-bounds).
-        for (std::size_t i = 1; i < count; ++i) {
-          for (std::size_t j = i; j > 0 && entry.cells[j] < entry.cells[j - 1]; --j) {
-            std::swap(entry.cells[j], entry.cells[j - 1]);
-          }
-        }
-        entry.weight = w_str;
-        out.push_back(entry);
-      }
-      AddSightRay(c, v, points[facing], cells[facing], w_vis);
-    }
-  }
-}
-
-/// Visibility of a segment without planes: rays to the raw segment.
-void AddVisibilityOnly(const Context& c, SegmentId s) {
-  const Segment3& seg = c.scene.segments[s];
-  const double length = seg.Length();
-  if (length <= 0.0) return;
-  const std::int32_t k_samples = NumSamples(c, length);
-  const std::int64_t w_vis =
-      ToFixed(c.options.visibility_weight * length / (k_samples * c.sigma));
-  const auto views = c.scene.observations[s];
-  CellId hint;
-  for (std::int32_t k = 0; k < k_samples; ++k) {
-    const Vec3 q = seg.p1 + ((k + 0.5) / k_samples) * (seg.p2 - seg.p1);
-    if (!CountSample(c, q, views.size())) continue;
-    for (const ViewpointId v : views) {
-      const std::array<Vec3, 1> ties{c.scene.viewpoints[v] - q};
-      hint = c.locator.Locate(q, ties, hint);
-      AddSightRay(c, v, q, hint, w_vis);
-    }
-  }
-}
-
-void ProcessSegment(const Context& c, SegmentId s, std::vector<StructuralEntry>& structural) {
-  const PlaneMembership membership =
-      c.scene.HasMemberships() ? c.scene.memberships[s] : PlaneMembership{};
-  if (membership.count == 0) {
-    AddVisibilityOnly(c, s);
-    return;
-  }
-  const Plane3& p1 = c.scene.planes[membership.planes[0]];
-  if (membership.count == 1) {
-    AddTextural(c, s, p1, 1.0);
-    return;
-  }
-  const Plane3& p2 = c.scene.planes[membership.planes[1]];
-  const double sin_angle = p1.normal.cross(p2.normal).norm();
-  const double min_sin = std::sin(c.options.min_crease_angle_deg * std::numbers::pi / 180.0);
-  if (sin_angle < min_sin || sin_angle == 0.0) {
-    c.acc.parallel_creases.fetch_add(1, std::memory_order_relaxed);
-    const Segment3& seg = c.scene.segments[s];
-    const double d1 = std::abs(p1.SignedDistance(seg.p1)) + std::abs(p1.SignedDistance(seg.p2));
-    const double d2 = std::abs(p2.SignedDistance(seg.p1)) + std::abs(p2.SignedDistance(seg.p2));
-    AddTextural(c, s, d2 < d1 ? p2 : p1, 1.0);
-    return;
-  }
-  if (c.options.structural_as_textural) {
-    AddTextural(c, s, p1, 1.0);
-    AddTextural(c, s, p2, 1.0);
-    return;
-  }
-  AddStructural(c, s, p1, p2, structural);
-}
-
-double FacetArea(const CellComplex& cx, FacetId f) {
-  const auto verts = cx.facet_vertices[f];
-  Vec3 sum = Vec3::Zero();
-  const Vec3& p0 = cx.vertex_points[verts[0]];
-  for (std::size_t k = 1; k + 1 < verts.size(); ++k) {
-    sum += (cx.vertex_points[verts[k]] - p0).cross(cx.vertex_points[verts[k + 1]] - p0);
-  }
-  return 0.5 * sum.norm();
-}
-
-/// Edge and corner parity groups over interior edges and vertices.
-void AddRegularisation(const CellComplex& cx, const EnergyOptions& options, double sigma,
-                       solver::EnergyInput& energy) {
-  std::vector<std::uint8_t> edge_interior(cx.NumEdges(), 0);
-  for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-    const EdgeId id(e);
-    edge_interior[e] = cx.edge_cells[id].size() == cx.edge_facets[id].size() ? 1 : 0;
-  }
-  std::vector<CellId> cells;
-  std::vector<std::int8_t> signs;
-  const auto add_group = [&](double weight) {
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    signs.clear();
-    for (const CellId cell : cells) signs.push_back(cx.cell_colour[cell]);
-    energy.AddParityGroup(cells, signs, weight);
-  };
-  if (options.edge_weight > 0.0) {
-    for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-      if (edge_interior[e] == 0) continue;
-      const EdgeId id(e);
-      const auto& ev = cx.edge_vertices[id];
-      const double length = (cx.vertex_points[ev[1]] - cx.vertex_points[ev[0]]).norm();
-      const double weight = options.edge_weight * length / sigma;
-      if (!(weight > 0.0)) continue;
-      const auto around = cx.edge_cells[id];
-      cells.assign(around.begin(), around.end());
-      add_group(weight);
-    }
-  }
-  if (options.corner_weight > 0.0) {
-    // Vertex -> incident edges (counting sort, edges ascending per vertex).
-    std::vector<std::uint32_t> offsets(cx.NumVertices() + 1, 0);
-    for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-      for (const VertexId v : cx.edge_vertices[EdgeId(e)]) ++offsets[v.index() + 1];
-    }
-    for (std::size_t v = 0; v < cx.NumVertices(); ++v) offsets[v + 1] += offsets[v];
-    std::vector<std::uint32_t> incident(offsets.back());
-    std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-      for (const VertexId v : cx.edge_vertices[EdgeId(e)]) {
-        incident[fill[v.index()]++] = static_cast<std::uint32_t>(e);
-      }
-    }
-    for (std::size_t v = 0; v < cx.NumVertices(); ++v) {
-      bool interior = offsets[v + 1] > offsets[v];
-      cells.clear();
-      for (std::uint32_t i = offsets[v]; i < offsets[v + 1] && interior; ++i) {
-        interior = edge_interior[incident[i]] != 0;
-        const auto around = cx.edge_cells[EdgeId(static_cast<std::size_t>(incident[i]))];
-        cells.insert(cells.end(), around.begin(), around.end());
-      }
-      if (!interior) continue;
-      add_group(options.corner_weight);
-    }
-  }
-}
 
 void ApplyBoundary(const CellComplex& cx, BoundaryMode boundary, solver::EnergyInput& energy,
                    EvidenceStats& stats) {
@@ -464,153 +135,15 @@ Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& sce
                                          const EnergyOptions& options, BoundaryMode boundary,
                                          const RunContext& ctx) noexcept {
   return CatchAll(kStage, [&]() -> EvidenceResult {
-    if (const Status st = options.Validate(); !st) throw LinesurfException(st.error());
-    LINESURF_THROW_IF(scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
-                      kInvalidInput, kStage, "memberships has " << scene.memberships.size()
-                                                                << " entries for "
-                                                                << scene.NumSegments()
-                                                                << " segments");
-    LINESURF_THROW_IF(scene.observations.NumRows() != scene.NumSegments(), kInvalidInput, kStage,
-                      "observations has " << scene.observations.NumRows() << " rows for "
-                                          << scene.NumSegments() << " segments");
     EvidenceResult result;
-    EvidenceStats& stats = result.stats;
-    for (std::size_t s = 0; s < scene.NumSegments(); ++s) {
-      const SegmentId id(s);
-      const std::uint8_t count = scene.HasMemberships() ? scene.memberships[id].count : 0;
-      LINESURF_THROW_IF(count > 2, kInvalidInput, kStage, "segment " << s << " has " << count
-                                                                     << " planes");
-      for (std::uint8_t k = 0; k < count; ++k) {
-        LINESURF_THROW_IF(scene.memberships[id].planes[k].index() >= scene.planes.size(),
-                          kInvalidInput, kStage,
-                          "segment " << s << ": plane index out of range");
-      }
-      ++stats.segments_with_planes[count];
-      stats.observations += scene.observations[id].size();
-    }
-    for (const ViewpointId v : scene.observations.items()) {
-      LINESURF_THROW_IF(v.index() >= scene.viewpoints.size(), kInvalidInput, kStage,
-                        "observation of viewpoint " << v.index() << " out of range");
-    }
-    stats.sigma = options.sigma ? *options.sigma : DefaultSigma(scene);
-    if (Status scale = CheckEnergyScale(scene, cx.box, options); !scale) {
-      throw LinesurfException(scale.error());
-    }
-
-    const partition::CellLocator locator(cx);
-    Accumulators acc;
-    acc.cost_if_empty.assign(cx.NumCells(), 0);
-    acc.cost_if_full.assign(cx.NumCells(), 0);
-    acc.facet_weight.assign(cx.NumFacets(), 0);
-    const std::size_t num_chunks = (scene.NumSegments() + kSegmentChunk - 1) / kSegmentChunk;
-    acc.structural.resize(num_chunks);
-    IdVector<ViewpointId, CellId> viewpoint_cells(scene.viewpoints.size(), CellId::Invalid());
-    const Context c{cx, scene, options, locator, viewpoint_cells, stats.sigma,
-                    kSideOffsetRelative * cx.box.Extent().norm(), acc};
-    std::atomic<bool> stopped{false};
-    std::atomic<std::size_t> done{0};
-    RunInArena(ctx, [&] {
-      tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, scene.viewpoints.size(), 64),
-          [&](const tbb::blocked_range<std::size_t>& r) {
-            for (std::size_t v = r.begin(); v != r.end(); ++v) {
-              const Vec3& p = scene.viewpoints[ViewpointId(v)];
-              if (cx.box.Contains(p)) viewpoint_cells[ViewpointId(v)] = locator.Locate(p, {});
-            }
-          },
-          tbb::simple_partitioner{});
-      tbb::parallel_for(
-          tbb::blocked_range<std::size_t>(0, num_chunks, 1),
-          [&](const tbb::blocked_range<std::size_t>& r) {
-            for (std::size_t chunk = r.begin(); chunk != r.end(); ++chunk) {
-              if (stopped.load(std::memory_order_relaxed) || ctx.ShouldStop()) {
-                stopped.store(true, std::memory_order_relaxed);
-                return;
-              }
-              const std::size_t end = std::min(scene.NumSegments(), (chunk + 1) * kSegmentChunk);
-              for (std::size_t s = chunk * kSegmentChunk; s < end; ++s) {
-                ProcessSegment(c, SegmentId(s), acc.structural[chunk]);
-              }
-              const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-              ctx.ReportProgress(kStage, static_cast<double>(finished) /
-                                             static_cast<double>(num_chunks));
-            }
-          },
-          tbb::simple_partitioner{});
-    });
-    LINESURF_THROW_IF(stopped.load(), kCancelled, kStage, "cancelled");
-
-    // Viewpoint prior, per observation.
-    const std::int64_t w_prior = ToFixed(options.viewpoint_prior_weight);
-    for (const ViewpointId v : scene.observations.items()) {
-      const CellId cell = viewpoint_cells[v];
-      if (cell.IsValid()) {
-        acc.cost_if_full[cell.index()] += w_prior;
-      } else {
-        ++stats.viewpoints_outside_box;
-      }
-    }
-
-    solver::EnergyInput& energy = result.energy;
-    energy.ResizeCells(cx.NumCells());
-    for (std::size_t i = 0; i < cx.NumCells(); ++i) {
-      energy.cost_if_empty[CellId(i)] = FromFixed(acc.cost_if_empty[i]);
-      energy.cost_if_full[CellId(i)] = FromFixed(acc.cost_if_full[i]);
-    }
-    const double area_scale = options.area_weight / (stats.sigma * stats.sigma);
-    for (std::size_t f = 0; f < cx.NumFacets(); ++f) {
-      const FacetId id(f);
-      const CellId a = cx.facet_positive_cell[id];
-      const CellId b = cx.facet_negative_cell[id];
-      if (!a.IsValid() || !b.IsValid()) continue;
-      double weight = FromFixed(acc.facet_weight[f]);
-      if (area_scale > 0.0) weight += area_scale * FacetArea(cx, id);
-      if (weight > 0.0) energy.AddPair(a, b, weight);
-    }
-    // Structural groups: concatenated in chunk order, sorted by cells, identical groups merged
-    // (integer sums, so the order of addition does not matter).
-    std::vector<StructuralEntry> all;
-    for (auto& chunk : acc.structural) {
-      all.insert(all.end(), chunk.begin(), chunk.end());
-      std::vector<StructuralEntry>().swap(chunk);
-    }
-    std::sort(all.begin(), all.end(), [](const StructuralEntry& x, const StructuralEntry& y) {
-      return x.cells < y.cells;
-    });
-    std::vector<CellId> group;
-    for (std::size_t i = 0; i < all.size();) {
-      std::int64_t w = 0;
-      std::size_t j = i;
-      for (; j < all.size() && all[j].cells == all[i].cells; ++j) w += all[j].weight;
-      group.clear();
-      for (const CellId cell : all[i].cells) {
-        if (cell.IsValid()) group.push_back(cell);
-      }
-      energy.AddStructuralGroup(group, FromFixed(w));
-      i = j;
-    }
-    AddRegularisation(cx, options, stats.sigma, energy);
-    ApplyBoundary(cx, boundary, energy, stats);
-
-    stats.samples = acc.samples.load();
-    stats.samples_outside_box = acc.outside.load();
-    stats.grazing_samples = acc.grazing.load();
-    stats.walks = acc.walks.load();
-    stats.facets_crossed = acc.crossings.load();
-    stats.parallel_creases = acc.parallel_creases.load();
-    const auto warn = [&](std::size_t n, const char* what) {
-      if (n == 0) return;
-      std::ostringstream os;
-      os << n << " " << what;
-      result.warnings.push_back(os.str());
-    };
-    warn(stats.parallel_creases,
-         "structural segments with nearly parallel planes treated as textural");
-    warn(stats.samples_outside_box, "segment samples outside the box skipped");
-    warn(stats.viewpoints_outside_box, "observations from viewpoints outside the box: no prior");
-    warn(stats.grazing_samples,
-         "segment samples skipped: the viewpoint lies in the segment's plane (no evidence)");
-    result.viewpoint_cells = std::move(viewpoint_cells);
+    CheckEvidenceInput(scene, cx.box, options, result.stats);
+    const ComplexSpace space(cx);
+    IntegratedEvidence evidence = IntegrateSegments(space, scene, options, result.stats, ctx);
+    AddIntegratedTerms(space, evidence, options, result.stats.sigma, result.energy);
+    AddComplexRegularisation(cx, options, result.stats.sigma, 0, result.energy);
+    ApplyBoundary(cx, boundary, result.energy, result.stats);
+    result.warnings = EvidenceWarnings(result.stats);
+    result.viewpoint_cells = std::move(evidence.viewpoint_cells);
     return result;
   });
 }
