@@ -60,8 +60,8 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
     stats.automatic_size = options.block_size == 0.0;
     stats.block_size = options.block_size;
     if (stats.automatic_size) {
-      stats.size_choice =
-          Take(partition::ChooseBlockSize(scene.segments.raw(), box, options.size_rule));
+      stats.size_choice = Take(partition::ChooseBlockSize(
+          scene.segments.raw(), box, options.size_rule, scene.memberships.raw()));
       stats.block_size = stats.size_choice.block_size;
     }
     const partition::BlockGrid grid = Take(partition::BlockGrid::Create(box, stats.block_size));

@@ -56,6 +56,36 @@ TEST(ChooseBlockSize, BlocksStayLongerThanTheSegments) {
   EXPECT_TRUE(choice->limited_by_length);
 }
 
+// Few segments, but each of 64 cells of a 4 x 4 x 4 lattice holds segments of its own 8 planes:
+// the segment target is met by one block, the plane target only by blocks of a lattice cell.
+TEST(ChooseBlockSize, ManyPlanesPerBlockAreHalvedUntilTheMeanFitsTheTarget) {
+  std::vector<Segment3> segments;
+  std::vector<PlaneMembership> memberships;
+  Rng rng(5);
+  for (int cell = 0; cell < 64; ++cell) {
+    const Vec3 corner(16.0 * (cell % 4), 16.0 * ((cell / 4) % 4), 16.0 * (cell / 16));
+    for (int p = 0; p < 8; ++p) {
+      const Vec3 a = corner + Vec3(rng.Uniform(1, 14), rng.Uniform(1, 14), rng.Uniform(1, 14));
+      segments.push_back({a, a + Vec3(0.5, 0, 0)});
+      PlaneMembership m;
+      m.Add(PlaneId(static_cast<std::size_t>(cell * 8 + p)));
+      memberships.push_back(m);
+    }
+  }
+  BlockSizeRule rule;
+  rule.min_block_lengths = 1;
+  rule.target_planes_per_block = 8;
+  const auto by_segments = ChooseBlockSize(segments, Cube(64), rule);
+  ASSERT_TRUE(by_segments);
+  EXPECT_EQ(by_segments->halvings, 0);
+  const auto choice = ChooseBlockSize(segments, Cube(64), rule, memberships);
+  ASSERT_TRUE(choice) << choice.error().ToString();
+  EXPECT_EQ(choice->block_size, 16.0);
+  EXPECT_EQ(choice->occupied_blocks, 64u);
+  EXPECT_EQ(choice->mean_planes_per_block, 8.0);
+  EXPECT_FALSE(ChooseBlockSize(segments, Cube(64), rule, std::span(memberships).first(3)));
+}
+
 TEST(ChooseBlockSize, RejectsBadRules) {
   BlockSizeRule rule;
   rule.target_segments_per_block = 0;
