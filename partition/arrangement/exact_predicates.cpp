@@ -152,6 +152,38 @@ bool ExactParallelNormals(const Eigen::Vector4d& p, const Eigen::Vector4d& q, Ex
   return true;
 }
 
+namespace {
+
+/// (a x b) . (p x q) (Binet-Cauchy) and (a x l) . (b x l) with l = p x q, in T.
+template <typename T>
+void AngularTerms(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q, T& orientation,
+                  T& dot) {
+  orientation = Dot<T>(a, p) * Dot<T>(b, q) - Dot<T>(a, q) * Dot<T>(b, p);
+  const T l[3] = {T(p[1]) * T(q[2]) - T(p[2]) * T(q[1]), T(p[2]) * T(q[0]) - T(p[0]) * T(q[2]),
+                  T(p[0]) * T(q[1]) - T(p[1]) * T(q[0])};
+  T al = T(a[0]) * l[0] + T(a[1]) * l[1] + T(a[2]) * l[2];
+  T bl = T(b[0]) * l[0] + T(b[1]) * l[1] + T(b[2]) * l[2];
+  T ll = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
+  dot = Dot<T>(a, b) * ll - al * bl;
+}
+
+}  // namespace
+
+AngularSigns ExactAngularSigns(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q,
+                               ExactCounter* counter) {
+  // (a x l) x (b x l) = det[a, b, l] l, so the orientation is the sign of (a x b) . l.
+  Interval io, id;
+  AngularTerms<Interval>(a, b, p, q, io, id);
+  AngularSigns s{SignOf(io), SignOf(id)};
+  if (s.orientation == 2 || s.dot == 2) {
+    CountFallback(counter);
+    Exact eo, ed;
+    AngularTerms<Exact>(a, b, p, q, eo, ed);
+    s = {SignOf(eo), SignOf(ed)};
+  }
+  return s;
+}
+
 VertexBounds ComputeVertexBounds(const Eigen::Vector4d& i, const Eigen::Vector4d& j,
                                  const Eigen::Vector4d& k, ExactCounter* counter) {
   Interval num[3];

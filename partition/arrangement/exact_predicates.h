@@ -43,6 +43,16 @@ int ExactProportionality(const Eigen::Vector4d& p, const Eigen::Vector4d& q,
 bool ExactParallelNormals(const Eigen::Vector4d& p, const Eigen::Vector4d& q,
                           ExactCounter* counter = nullptr);
 
+/// Around the line of direction l = p x q (p, q normals of two planes through it), the
+/// directions a x l and b x l: the sign of l . ((a x l) x (b x l)) (> 0: b x l is less than half a
+/// turn counter-clockwise about l from a x l) and the sign of their dot product, exactly.
+struct AngularSigns {
+  int orientation = 0;
+  int dot = 0;
+};
+AngularSigns ExactAngularSigns(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q,
+                               ExactCounter* counter = nullptr);
+
 /// A box that certainly contains the vertex of the independent planes (i, j, k), and its
 /// rounded coordinates (for output only).
 struct VertexBounds {
