@@ -5,18 +5,14 @@
 #include "engine/core/median_segment_length.h"
 #include "engine/core/parallel.h"
 #include "engine/detect/collinear_groups.h"
+#include "partition/mesh/triangle_tree.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <numeric>
 #include <tuple>
@@ -33,36 +29,12 @@ constexpr int kMaxSamplesPerSegment = 1024;
 /// other's line (as eps auto counts them).
 constexpr double kCollinearPartsOverMedianLength = 1e-5;
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle = Kernel::Triangle_3;
-using TriangleIterator = std::vector<Triangle>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Kernel::Point_3 ToPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-
-/// The mesh as triangles (fan of each face, degenerate ones skipped), with the component of
-/// every face.
+/// The mesh's faces fanned into a triangle tree, with the component of every face.
 struct MeshIndex {
-  std::vector<Triangle> triangles;
-  std::vector<std::uint32_t> triangle_face;
+  partition::TriangleTree tree;
   std::vector<std::uint32_t> face_component;
   std::size_t num_components = 0;
 };
-
-void CheckIndices(const PolygonMesh& mesh) {
-  LINESURF_THROW_IF(
-      mesh.face_offsets.empty() || mesh.face_offsets.back() != mesh.face_indices.size(),
-      kInvalidInput,
-      kStage,
-      "mesh: face offsets do not cover the indices");
-  for (std::uint32_t v : mesh.face_indices) {
-    LINESURF_THROW_IF(v >= mesh.vertices.size(),
-                      kInvalidInput,
-                      kStage,
-                      "mesh: a face refers to vertex " << v << " of " << mesh.vertices.size());
-  }
-}
 
 /// Components: faces sharing a vertex, vertices at the bit-identical position being one.
 std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& count) {
@@ -99,22 +71,8 @@ std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& 
 }
 
 MeshIndex IndexMesh(const PolygonMesh& mesh) {
-  CheckIndices(mesh);
-  MeshIndex index;
+  MeshIndex index{partition::TriangleTree(mesh, kStage, "surface"), {}, 0};
   index.face_component = FaceComponents(mesh, index.num_components);
-  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    const auto face = mesh.Face(f);
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      const Triangle t(ToPoint(mesh.vertices[face[0]]),
-                       ToPoint(mesh.vertices[face[k]]),
-                       ToPoint(mesh.vertices[face[k + 1]]));
-      if (t.is_degenerate()) continue;  // exact collinearity test; no area, never nearest
-      index.triangles.push_back(t);
-      index.triangle_face.push_back(static_cast<std::uint32_t>(f));
-    }
-  }
-  LINESURF_THROW_IF(
-      index.triangles.empty(), kInvalidInput, kStage, "mesh has no face with positive area");
   return index;
 }
 
@@ -132,16 +90,12 @@ struct SegmentFigures {
 /// meets that face well before the noisy sample.
 bool IsClear(const Vec3& eye,
              const Vec3& p,
-             const Tree& tree,
+             const partition::TriangleTree& tree,
              double fit,
-             std::vector<TriangleIterator>& hits) {
-  hits.clear();
-  tree.all_intersected_primitives(Kernel::Segment_3(ToPoint(eye), ToPoint(p)),
-                                  std::back_inserter(hits));
-  for (const TriangleIterator& t : hits) {
-    const Vec3 a(t->vertex(0).x(), t->vertex(0).y(), t->vertex(0).z());
-    const Vec3 b(t->vertex(1).x(), t->vertex(1).y(), t->vertex(1).z());
-    const Vec3 c(t->vertex(2).x(), t->vertex(2).y(), t->vertex(2).z());
+             std::vector<std::uint32_t>& hits) {
+  tree.IntersectedTriangles(eye, p, hits);
+  for (const std::uint32_t t : hits) {
+    const auto [a, b, c] = tree.Corners(t);
     const Vec3 n = (b - a).cross(c - a).normalized();
     if (std::abs(n.dot(p - a)) > fit) return false;
   }
@@ -152,22 +106,21 @@ SegmentFigures MeasureSegment(const Scene& scene,
                               SegmentId s,
                               bool supported,
                               const MeshIndex& index,
-                              const Tree& tree,
                               double fit,
                               int samples) {
   SegmentFigures out;
   const Segment3& seg = scene.segments[s];
   const double piece = seg.Length() / samples;
-  std::vector<TriangleIterator> hits;
+  const partition::TriangleTree& tree = index.tree;
+  std::vector<std::uint32_t> hits;
   for (int k = 0; k < samples; ++k) {
     const Vec3 p = seg.p1 + ((k + 0.5) / samples) * (seg.p2 - seg.p1);
     if (supported) {
-      const auto [closest, primitive] = tree.closest_point_and_primitive(ToPoint(p));
-      const double d2 = CGAL::to_double(CGAL::squared_distance(closest, ToPoint(p)));
-      if (d2 <= fit * fit) {
+      const partition::TriangleTree::Nearest nearest = tree.Closest(p);
+      if (nearest.squared_distance <= fit * fit) {
         out.near_length += piece;
-        const std::size_t t = static_cast<std::size_t>(primitive - index.triangles.begin());
-        out.near_by_component.emplace_back(index.face_component[index.triangle_face[t]], piece);
+        out.near_by_component.emplace_back(index.face_component[tree.FaceOf(nearest.triangle)],
+                                           piece);
       }
     }
     for (ViewpointId v : scene.observations[s]) {
@@ -234,8 +187,6 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
       kStage,
       "memberships: " << scene.memberships.size() << " for " << scene.NumSegments() << " segments");
   const MeshIndex index = IndexMesh(mesh);
-  Tree tree(index.triangles.begin(), index.triangles.end());
-  tree.accelerate_distance_queries();
   const double fit = options.fit_factor * epsilon;
   const auto supported = [&](SegmentId s) {
     return scene.HasMemberships() && scene.memberships[s].count > 0;
@@ -249,7 +200,7 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
           const SegmentId s(static_cast<std::uint32_t>(i));
           per_segment[i] =
-              MeasureSegment(scene, s, supported(s), index, tree, fit, options.samples_per_segment);
+              MeasureSegment(scene, s, supported(s), index, fit, options.samples_per_segment);
         }
       },
       tbb::simple_partitioner{});

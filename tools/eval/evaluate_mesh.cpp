@@ -4,11 +4,8 @@
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
+#include "partition/mesh/triangle_tree.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -28,65 +25,35 @@ constexpr std::size_t kSampleGrain = 1024;
 constexpr std::uint64_t kResultStream = 1;
 constexpr std::uint64_t kGroundTruthStream = 2;
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Triangle = Kernel::Triangle_3;
-using TriangleIterator = std::vector<Triangle>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-
-Kernel::Point_3 ToPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-
-/// A mesh as non-degenerate triangles (fan of each face) with cumulative areas for sampling.
+/// A mesh's triangle tree with cumulative triangle areas for area-uniform sampling.
 struct TriangleSet {
-  std::vector<Triangle> triangles;
+  partition::TriangleTree tree;
   std::vector<double> cumulative_area;  ///< cumulative_area[t] = area of triangles 0..t
   [[nodiscard]] double Area() const { return cumulative_area.empty() ? 0.0 : cumulative_area.back(); }
 };
 
 TriangleSet Triangulate(const PolygonMesh& mesh, const std::string& name) {
-  LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.back() != mesh.face_indices.size(),
-                    kInvalidInput, kStage, name << " mesh: face offsets do not cover the indices");
-  TriangleSet set;
+  TriangleSet set{partition::TriangleTree(mesh, kStage, name), {}};
   double total = 0.0;
-  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    const auto face = mesh.Face(f);
-    for (std::uint32_t v : face) {
-      LINESURF_THROW_IF(v >= mesh.vertices.size(), kInvalidInput, kStage,
-                        name << " mesh: face " << f << " refers to vertex " << v << " of "
-                             << mesh.vertices.size());
-    }
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      const Triangle t(ToPoint(mesh.vertices[face[0]]), ToPoint(mesh.vertices[face[k]]),
-                       ToPoint(mesh.vertices[face[k + 1]]));
-      if (t.is_degenerate()) continue;  // exact collinearity test; such triangles have no area
-      total += std::sqrt(CGAL::to_double(t.squared_area()));
-      set.triangles.push_back(t);
-      set.cumulative_area.push_back(total);
-    }
+  for (std::size_t t = 0; t < set.tree.NumTriangles(); ++t) {
+    total += set.tree.Area(t);
+    set.cumulative_area.push_back(total);
   }
-  LINESURF_THROW_IF(set.triangles.empty(), kInvalidInput, kStage,
-                    name << " mesh has no face with positive area");
   return set;
 }
 
 /// Sample i of a stream: an area-uniform triangle, then uniform barycentrics
 /// (1 - sqrt r1, sqrt r1 (1 - r2), sqrt r1 r2).
-Kernel::Point_3 SamplePoint(const TriangleSet& set, std::uint64_t seed, std::uint64_t stream,
-                            std::size_t i) {
+Vec3 SamplePoint(const TriangleSet& set, std::uint64_t seed, std::uint64_t stream, std::size_t i) {
   Rng rng(MixSeed(seed, RngStage::kEvaluate, stream, i));
   const double u = rng.Uniform() * set.Area();
   const auto it = std::upper_bound(set.cumulative_area.begin(), set.cumulative_area.end(), u);
   const std::size_t t = std::min<std::size_t>(
-      static_cast<std::size_t>(it - set.cumulative_area.begin()), set.triangles.size() - 1);
+      static_cast<std::size_t>(it - set.cumulative_area.begin()), set.tree.NumTriangles() - 1);
   const double s1 = std::sqrt(rng.Uniform());
   const double r2 = rng.Uniform();
-  const Triangle& tri = set.triangles[t];
-  const double a = 1.0 - s1;
-  const double b = s1 * (1.0 - r2);
-  const double c = s1 * r2;
-  return {a * tri[0].x() + b * tri[1].x() + c * tri[2].x(),
-          a * tri[0].y() + b * tri[1].y() + c * tri[2].y(),
-          a * tri[0].z() + b * tri[1].z() + c * tri[2].z()};
+  const auto [p0, p1, p2] = set.tree.Corners(t);
+  return (1.0 - s1) * p0 + (s1 * (1.0 - r2)) * p1 + (s1 * r2) * p2;
 }
 
 template <typename Fn>
@@ -137,17 +104,13 @@ EvaluationResult Evaluate(const PolygonMesh& result_mesh, const PolygonMesh& gt_
                           const RunContext* ctx) {
   const TriangleSet result_set = Triangulate(result_mesh, "result");
   const TriangleSet gt_set = Triangulate(gt_mesh, "ground truth");
-  Tree result_tree(result_set.triangles.begin(), result_set.triangles.end());
-  Tree gt_tree(gt_set.triangles.begin(), gt_set.triangles.end());
-  result_tree.accelerate_distance_queries();
-  gt_tree.accelerate_distance_queries();
 
   const std::size_t n = options.samples_per_mesh;
   std::vector<double> result_to_gt(n);
   ForEachChunk(n, ctx, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const auto p = SamplePoint(result_set, options.seed, kResultStream, i);
-      result_to_gt[i] = std::sqrt(CGAL::to_double(gt_tree.squared_distance(p)));
+      const Vec3 p = SamplePoint(result_set, options.seed, kResultStream, i);
+      result_to_gt[i] = std::sqrt(gt_set.tree.SquaredDistance(p));
     }
   });
 
@@ -156,25 +119,24 @@ EvaluationResult Evaluate(const PolygonMesh& result_mesh, const PolygonMesh& gt_
   ForEachChunk(n, ctx, [&](std::size_t begin, std::size_t end) {
     std::size_t last_seen_by = 0;  // try the last successful viewpoint first (speed only)
     for (std::size_t i = begin; i < end; ++i) {
-      const auto p = SamplePoint(gt_set, options.seed, kGroundTruthStream, i);
+      const Vec3 p = SamplePoint(gt_set, options.seed, kGroundTruthStream, i);
       bool visible = !visible_from.has_value();
       if (!visible) {
         const std::vector<Vec3>& views = *visible_from;
-        const Vec3 sample(p.x(), p.y(), p.z());
         for (std::size_t k = 0; k < views.size() && !visible; ++k) {
           const std::size_t v = (last_seen_by + k) % views.size();
-          const Vec3 ray = sample - views[v];
+          const Vec3 ray = p - views[v];
           const double length = ray.norm();
           if (length <= options.visibility_offset) {
             visible = true;
           } else {
-            const Vec3 stop = sample - ray * (options.visibility_offset / length);
-            visible = !gt_tree.do_intersect(Kernel::Segment_3(ToPoint(views[v]), ToPoint(stop)));
+            const Vec3 stop = p - ray * (options.visibility_offset / length);
+            visible = !gt_set.tree.Intersects(views[v], stop);
           }
           if (visible) last_seen_by = v;
         }
       }
-      gt_to_result[i] = visible ? std::sqrt(CGAL::to_double(result_tree.squared_distance(p)))
+      gt_to_result[i] = visible ? std::sqrt(result_set.tree.SquaredDistance(p))
                                 : std::nan("");
     }
   });
