@@ -34,19 +34,53 @@ VertexKey GlobalVertexKey(const BlockComplex& block, VertexId v) {
   return key;
 }
 
+/// The local plane of block `block` with global key `key`, or invalid.
+ComplexPlaneId LocalPlane(const BlockComplex& block, PlaneKey key) {
+  const auto& keys = block.plane_keys;
+  if (key.IsFace()) {
+    for (std::size_t k = 0; k < kNumBoxPlanes; ++k) {
+      if (keys[k] == key) return ComplexPlaneId(k);
+    }
+    return ComplexPlaneId();
+  }
+  const auto first = keys.begin() + static_cast<std::ptrdiff_t>(kNumBoxPlanes);
+  const auto it = std::lower_bound(first, keys.end(), key);
+  return it != keys.end() && *it == key
+             ? ComplexPlaneId(static_cast<std::size_t>(it - keys.begin()))
+             : ComplexPlaneId();
+}
+
+/// +1 when the local plane's coefficients are the global key's, -1 when negated (the box planes
+/// of the maximum faces have inward normals, the face keys increasing coordinates).
+int LocalOrientation(ComplexPlaneId local) {
+  return local.index() >= kNumBoxPlanes / 2 && local.index() < kNumBoxPlanes ? -1 : 1;
+}
+
 /// The side (+1/-1, in the global orientation of q) of cell c of block b, or 0 when q cuts the
-/// cell (some vertex strictly on each side: convex cells).
+/// cell (some vertex strictly on each side: convex cells). A plane of the block never cuts its
+/// cells, so the first vertex off it decides; for another block's plane every vertex counts.
 int CellSideOf(const BlockComplexes& cx, std::size_t b, CellId c, PlaneKey q) {
   const BlockComplex& block = cx.blocks[b];
   const CellComplex& k = block.complex;
+  const ComplexPlaneId local = LocalPlane(block, q);
+  if (local.IsValid()) {
+    for (const FacetId f : k.cell_facets[c]) {
+      if (k.facet_plane[f] != local) continue;
+      return LocalOrientation(local) * (k.facet_positive_cell[f] == c ? 1 : -1);
+    }
+  }
   bool positive = false;
   bool negative = false;
+  std::vector<VertexId> seen;
   for (const FacetId f : k.cell_facets[c]) {
     for (const VertexId v : k.facet_vertices[f]) {
+      if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
+      seen.push_back(v);
       const int s = SignAt(cx, GlobalVertexKey(block, v), q);
       positive |= s > 0;
       negative |= s < 0;
       if (positive && negative) return 0;
+      if (s != 0 && local.IsValid()) return s;
     }
   }
   return positive ? 1 : -1;
