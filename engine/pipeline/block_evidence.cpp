@@ -39,10 +39,12 @@ class BlockSpace final : public EvidenceSpace {
       for (std::size_t k = 0; k < face.facets.size(); ++k) {
         const auto [a, b] = SeamCells(face, face.facets[k]);
         seam_slots_.push_back({PairKey(a, b), seam_offsets_.back() + k});
+        upper_partners_.push_back(PairKey(b, a));
       }
       seam_offsets_.push_back(seam_offsets_.back() + face.facets.size());
     }
     std::sort(seam_slots_.begin(), seam_slots_.end());
+    std::sort(upper_partners_.begin(), upper_partners_.end());
   }
 
   const Box3& box() const override { return cx_.grid.box(); }
@@ -115,6 +117,24 @@ class BlockSpace final : public EvidenceSpace {
         from, c, to, c_to, [&](FacetId f, double /*t*/) { visit(offset + f.index()); });
   }
 
+  /// A cell sharing a seam facet with global cell `c` (the lower side when `c_is_lower`), as a
+  /// local cell of block b: a start for locating a point near that seam. Invalid if none.
+  CellId SeamPartner(CellId c, bool c_is_lower, std::size_t b) const {
+    const std::uint64_t first = static_cast<std::uint64_t>(c.value()) << 32;
+    std::uint64_t key = 0;
+    if (c_is_lower) {
+      const auto it = std::lower_bound(
+          seam_slots_.begin(), seam_slots_.end(), std::make_pair(first, std::size_t{0}));
+      if (it == seam_slots_.end() || (it->first >> 32) != c.value()) return CellId::Invalid();
+      key = it->first;
+    } else {
+      const auto it = std::lower_bound(upper_partners_.begin(), upper_partners_.end(), first);
+      if (it == upper_partners_.end() || (*it >> 32) != c.value()) return CellId::Invalid();
+      key = *it;
+    }
+    return Local(b, CellId(static_cast<std::uint32_t>(key & 0xffffffffu)));
+  }
+
   static std::uint64_t PairKey(CellId lower, CellId upper) {
     return (static_cast<std::uint64_t>(lower.value()) << 32) | upper.value();
   }
@@ -153,6 +173,8 @@ class BlockSpace final : public EvidenceSpace {
   /// (lower global cell, upper global cell) -> global facet, sorted: a cell of each block
   /// shares at most one seam facet.
   std::vector<std::pair<std::uint64_t, std::size_t>> seam_slots_;
+  /// (upper global cell, lower global cell), sorted.
+  std::vector<std::uint64_t> upper_partners_;
 };
 
 void BlockSpace::Walk(const Vec3& from,
@@ -218,11 +240,14 @@ void BlockSpace::Walk(const Vec3& from,
     Eigen::Vector3i next = block;
     next[axis] += step;
     const std::size_t b_next = static_cast<std::size_t>(grid.LinearIndex(next));
-    const CellId exit_cell = locators_[b].Locate(e, ties_here, cell);
-    const CellId entry_cell = locators_[b_next].Locate(e, ties_next);
-    if (!exit_cell.IsValid() || !entry_cell.IsValid()) return;  // unreachable: e is in both
-    WalkInBlock(b, x, cell, e, exit_cell, visit);
+    const std::size_t offset = facet_offsets_[b];
+    const CellId exit_cell = locators_[b].WalkToPoint(
+        x, cell, e, ties_here, [&](FacetId f, double /*t*/) { visit(offset + f.index()); });
     const CellId here = Global(b, exit_cell);
+    // Start the location in the next block from a seam partner of the exit cell: near e.
+    const CellId entry_cell =
+        locators_[b_next].Locate(e, ties_next, SeamPartner(here, step > 0, b_next));
+    if (!entry_cell.IsValid()) return;  // unreachable: e is in the next block
     const CellId there = Global(b_next, entry_cell);
     const std::uint64_t key = step > 0 ? PairKey(here, there) : PairKey(there, here);
     const auto it = std::lower_bound(

@@ -1,17 +1,18 @@
 #include "partition/arrangement/cell_locator.h"
 
+#include "engine/core/exception.h"
+#include "partition/arrangement/exact_predicates.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-
-#include "engine/core/exception.h"
-#include "partition/arrangement/exact_predicates.h"
 
 namespace linesurf::partition {
 
 CellLocator::CellLocator(const CellComplex& complex) : complex_(complex) {}
 
-int CellLocator::Side(const Vec3& p, ComplexPlaneId plane,
+int CellLocator::Side(const Vec3& p,
+                      ComplexPlaneId plane,
                       std::span<const Vec3> tie_directions) const {
   const Eigen::Vector4d& coeffs = complex_.planes[plane].coefficients;
   const int s = ExactSignAtPoint(coeffs, p);
@@ -38,7 +39,8 @@ int CellLocator::CellPlaneSide(CellId c, ComplexPlaneId plane) const {
       if (t[0] == plane || t[1] == plane || t[2] == plane) continue;
       const int s = ExactSignAtVertex(complex_.planes[t[0]].coefficients,
                                       complex_.planes[t[1]].coefficients,
-                                      complex_.planes[t[2]].coefficients, l);
+                                      complex_.planes[t[2]].coefficients,
+                                      l);
       if (s != 0) return s;
     }
   }
@@ -46,7 +48,9 @@ int CellLocator::CellPlaneSide(CellId c, ComplexPlaneId plane) const {
   return 0;
 }
 
-CellId CellLocator::Locate(const Vec3& p, std::span<const Vec3> tie_directions, CellId start) const {
+CellId CellLocator::Locate(const Vec3& p,
+                           std::span<const Vec3> tie_directions,
+                           CellId start) const {
   if (complex_.NumCells() == 0) return CellId();
   std::vector<std::int8_t> side(complex_.planes.size(), 0);  // 0 = not computed yet
   auto target = [&](ComplexPlaneId plane) {
@@ -54,7 +58,8 @@ CellId CellLocator::Locate(const Vec3& p, std::span<const Vec3> tie_directions, 
     if (s == 0) s = static_cast<std::int8_t>(Side(p, plane, tie_directions));
     return s;
   };
-  CellId c = start.IsValid() && start.index() < complex_.NumCells() ? start : CellId(std::uint32_t{0});
+  CellId c =
+      start.IsValid() && start.index() < complex_.NumCells() ? start : CellId(std::uint32_t{0});
   for (std::size_t step = 0; step <= complex_.planes.size(); ++step) {
     FacetId wrong;
     for (const FacetId f : complex_.cell_facets[c]) {
@@ -71,7 +76,46 @@ CellId CellLocator::Locate(const Vec3& p, std::span<const Vec3> tie_directions, 
   return CellId();
 }
 
-void CellLocator::WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to, CellId to_cell,
+template <typename Target>
+CellId CellLocator::WalkTowards(const Vec3& from,
+                                CellId c,
+                                const Vec3& to,
+                                Target&& target,
+                                const SegmentVisitor& visit,
+                                double& last_t) const {
+  auto parameter = [&](ComplexPlaneId plane) {
+    const Eigen::Vector4d& l = complex_.planes[plane].coefficients;
+    const double f0 = l.head<3>().dot(from) + l[3];
+    const double f1 = l.head<3>().dot(to) + l[3];
+    if (f0 == f1) return 0.5;
+    return std::clamp(f0 / (f0 - f1), 0.0, 1.0);
+  };
+  // Each crossing puts one plane on its target side for good: at most one step per plane.
+  for (std::size_t step = 0; step <= complex_.planes.size(); ++step) {
+    FacetId best;
+    double best_t = std::numeric_limits<double>::infinity();
+    for (const FacetId f : complex_.cell_facets[c]) {
+      const ComplexPlaneId plane = complex_.facet_plane[f];
+      if (complex_.IsBoxFacet(f) || target(plane) == CellSide(f, c)) continue;
+      const double t = parameter(plane);
+      if (t < best_t || (t == best_t && plane < complex_.facet_plane[best])) {
+        best = f;
+        best_t = t;
+      }
+    }
+    if (!best.IsValid()) return c;
+    last_t = std::max(last_t, best_t);  // crossings are reported in non-decreasing t
+    if (visit) visit(best, last_t);
+    c = complex_.Neighbour(best, c);
+  }
+  LINESURF_ASSERT(false);
+  return c;
+}
+
+void CellLocator::WalkSegment(const Vec3& from,
+                              CellId from_cell,
+                              const Vec3& to,
+                              CellId to_cell,
                               const SegmentVisitor& visit) const {
   LINESURF_ASSERT(from_cell.IsValid() && to_cell.IsValid());
   // The side of to_cell for each plane: from the point `to` when it lies strictly off the plane
@@ -87,39 +131,29 @@ void CellLocator::WalkSegment(const Vec3& from, CellId from_cell, const Vec3& to
     if (s == 0) s = static_cast<std::int8_t>(CellPlaneSide(to_cell, plane));
     return s;
   };
-  auto parameter = [&](ComplexPlaneId plane) {
-    const Eigen::Vector4d& l = complex_.planes[plane].coefficients;
-    const double f0 = l.head<3>().dot(from) + l[3];
-    const double f1 = l.head<3>().dot(to) + l[3];
-    if (f0 == f1) return 0.5;
-    return std::clamp(f0 / (f0 - f1), 0.0, 1.0);
-  };
-  CellId c = from_cell;
   double last_t = 0.0;
-  for (std::size_t step = 0; step <= 2 * complex_.planes.size(); ++step) {
-    FacetId best;
-    double best_t = std::numeric_limits<double>::infinity();
-    for (const FacetId f : complex_.cell_facets[c]) {
-      const ComplexPlaneId plane = complex_.facet_plane[f];
-      if (complex_.IsBoxFacet(f) || target(plane) == CellSide(f, c)) continue;
-      const double t = parameter(plane);
-      if (t < best_t || (t == best_t && plane < complex_.facet_plane[best])) {
-        best = f;
-        best_t = t;
-      }
-    }
-    if (!best.IsValid()) {
-      if (c == to_cell) return;
-      LINESURF_ASSERT(!cell_sides_only);
-      cell_sides_only = true;
-      std::fill(side.begin(), side.end(), std::int8_t{0});
-      continue;
-    }
-    last_t = std::max(last_t, best_t);  // crossings are reported in non-decreasing t
-    if (visit) visit(best, last_t);
-    c = complex_.Neighbour(best, c);
-  }
-  LINESURF_ASSERT(false);
+  const CellId reached = WalkTowards(from, from_cell, to, target, visit, last_t);
+  if (reached == to_cell) return;
+  cell_sides_only = true;
+  std::fill(side.begin(), side.end(), std::int8_t{0});
+  const CellId end = WalkTowards(from, reached, to, target, visit, last_t);
+  LINESURF_ASSERT(end == to_cell);
+}
+
+CellId CellLocator::WalkToPoint(const Vec3& from,
+                                CellId from_cell,
+                                const Vec3& to,
+                                std::span<const Vec3> tie_directions,
+                                const SegmentVisitor& visit) const {
+  LINESURF_ASSERT(from_cell.IsValid());
+  std::vector<std::int8_t> side(complex_.planes.size(), 0);
+  auto target = [&](ComplexPlaneId plane) {
+    std::int8_t& s = side[plane.index()];
+    if (s == 0) s = static_cast<std::int8_t>(Side(to, plane, tie_directions));
+    return s;
+  };
+  double last_t = 0.0;
+  return WalkTowards(from, from_cell, to, target, visit, last_t);
 }
 
 }  // namespace linesurf::partition
