@@ -361,14 +361,14 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
 }
 
 /// Pairs the faces on every edge that lies on a block face; appends pairs of edges with more
-/// than two faces to `crowded`; returns the number of such edges.
-std::size_t PairOnFaces(const BlockComplexes& cx,
-                        const MergedVertices& mv,
-                        const std::vector<Vec3>& face_normals,
-                        std::vector<LineCorner>& line_corners,
-                        std::uint32_t first_edge_id,
-                        SurfaceCycles& s,
-                        std::vector<EdgePair>& crowded) {
+/// than two faces to `crowded`; returns the number of such edges and of all edges.
+std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
+                                                const MergedVertices& mv,
+                                                const std::vector<Vec3>& face_normals,
+                                                std::vector<LineCorner>& line_corners,
+                                                std::uint32_t first_edge_id,
+                                                SurfaceCycles& s,
+                                                std::vector<EdgePair>& crowded) {
   std::sort(line_corners.begin(), line_corners.end(), [](const LineCorner& a, const LineCorner& b) {
     return std::tie(a.lo, a.hi, a.corner) < std::tie(b.lo, b.hi, b.corner);
   });
@@ -423,7 +423,7 @@ std::size_t PairOnFaces(const BlockComplexes& cx,
     }
     i = j;
   }
-  return non_manifold;
+  return {non_manifold, edge - first_edge_id};
 }
 
 double SceneMagnitude(const BlockComplexes& cx) {
@@ -564,8 +564,10 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
       crowded.insert(crowded.end(), block_crowded[b].begin(), block_crowded[b].end());
       result.stats.non_manifold_edges += block_non_manifold[b];
     }
-    result.stats.non_manifold_edges +=
+    const auto [non_manifold, on_faces_edges] =
         PairOnFaces(cx, mv, face_normals, line_corners, edge_offset.back(), s, crowded);
+    result.stats.non_manifold_edges += non_manifold;
+    result.stitch.edges_on_block_faces = on_faces_edges;
 
     AssembledSurface surface = AssembleSurface(s, mv.points, crowded, options.triangulate);
     result.mesh = std::move(surface.mesh);

@@ -41,9 +41,10 @@ struct BlockFacetRef {
 };
 
 struct StitchStats {
-  std::size_t seam_surface_facets = 0;  ///< surface faces from seam facets
-  std::size_t merged_vertex_keys = 0;   ///< distinct triples merged into another triple's vertex
-  std::size_t inserted_vertices = 0;    ///< vertices inserted into edges (T-junctions removed)
+  std::size_t seam_surface_facets = 0;   ///< surface faces from seam facets
+  std::size_t merged_vertex_keys = 0;    ///< distinct triples merged into another triple's vertex
+  std::size_t inserted_vertices = 0;     ///< vertices inserted into edges (T-junctions removed)
+  std::size_t edges_on_block_faces = 0;  ///< surface edges paired across blocks and seams
 };
 
 struct BlockExtractResult {

@@ -11,9 +11,10 @@
 /// 2-manifold by splitting: around every complex vertex the faces are walked as umbrellas, two
 /// faces at an edge being joined when they bound the same run of full cells around it; each
 /// umbrella gets its own output vertex. Where an edge keeps several face pairs between the same
-/// two output vertices (both ends single umbrellas), each of those pairs gets a vertex of its own
-/// at the edge midpoint (all of them, so no midpoint lies on another face's edge: no T-junction). The result is closed, 2-manifold and consistently oriented by
-/// construction.
+/// two output vertices (both ends single umbrellas), every face pair of that edge gets a vertex
+/// of its own at the edge midpoint (all of them, also pairs whose ends are other umbrellas at the
+/// same points, so no midpoint lies on another face's edge: no T-junction). The result is closed,
+/// 2-manifold and consistently oriented by construction.
 
 #include <cstdint>
 #include <span>

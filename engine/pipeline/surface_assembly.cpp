@@ -63,11 +63,12 @@ std::vector<std::uint32_t> AssignCornerVertices(std::size_t num_vertices,
 }
 
 /// Where both ends of an edge kept a single umbrella, several face pairs of that edge would
-/// share one output edge: each of those pairs gets its own vertex at the edge midpoint, inserted
-/// in both of its faces. Every pair, the first too, so that all faces along the edge have a
-/// corner there: a midpoint in some pairs only would lie on the straight edge of the others (a
-/// T-junction, which self-intersection checks rightly report). Returns the vertex inserted
-/// after each corner (or kNoIndex).
+/// share one output edge: then every pair of the edge gets its own vertex at the edge midpoint,
+/// inserted in both of its faces. Every pair, the first too and those whose ends are other
+/// umbrellas at the same points, so that all faces along the edge have a corner there: a
+/// midpoint in some pairs only would lie on the straight edge of the others (a T-junction, which
+/// self-intersection checks rightly report). Returns the vertex inserted after each corner (or
+/// kNoIndex).
 std::vector<std::uint32_t> SeparateSharedEdges(const SurfaceCycles& s,
                                                std::span<const Vec3> points,
                                                std::span<const EdgePair> crowded,
@@ -97,9 +98,13 @@ std::vector<std::uint32_t> SeparateSharedEdges(const SurfaceCycles& s,
     const std::uint32_t k0 = pairs.front().slot_a;
     const Vec3 midpoint = 0.5 * (points[s.corner_vertex[k0]] +
                                  points[s.corner_vertex[s.NextCorner(crowded[i].a, k0)]]);
-    for (const PairEnds& p : pairs) {
-      const auto shares_ends = [&](const PairEnds& q) { return &q != &p && q.ends == p.ends; };
-      if (std::none_of(pairs.begin(), pairs.end(), shares_ends)) continue;
+    const bool shared = std::any_of(pairs.begin(), pairs.end(), [&](const PairEnds& p) {
+      return std::any_of(pairs.begin(), pairs.end(), [&](const PairEnds& q) {
+        return &q != &p && q.ends == p.ends;
+      });
+    });
+    for (const PairEnds& p :
+         shared ? std::span<const PairEnds>(pairs) : std::span<const PairEnds>()) {
       const auto id = static_cast<std::uint32_t>(vertex_source.size());
       vertex_source.push_back(kNoIndex);
       extra_points.push_back(midpoint);
