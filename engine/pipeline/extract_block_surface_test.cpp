@@ -6,6 +6,7 @@
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
 #include "partition/arrangement/cell_locator.h"
+#include "tests/support/t_junctions.h"
 #include "tests/support/thread_count.h"
 #include "tools/eval/mesh_topology.h"
 
@@ -126,26 +127,6 @@ BlockExtractResult Stitch(const BlockComplexes& cx,
   return r ? std::move(r).value() : BlockExtractResult{};
 }
 
-/// Output vertices strictly inside output edges (by rounded coordinates, relative tolerance).
-std::size_t CountTJunctions(const PolygonMesh& mesh) {
-  std::size_t count = 0;
-  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    const auto face = mesh.Face(f);
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const Vec3& a = mesh.vertices[face[k]];
-      const Vec3& b = mesh.vertices[face[(k + 1) % face.size()]];
-      const double length = (b - a).norm();
-      for (const Vec3& p : mesh.vertices) {
-        if (p == a || p == b) continue;
-        const double t = (p - a).dot(b - a) / (length * length);
-        if (t <= 1e-9 || t >= 1 - 1e-9) continue;
-        if ((a + t * (b - a) - p).norm() < 1e-9 * length) ++count;
-      }
-    }
-  }
-  return count;
-}
-
 /// Closed, 2-manifold, oriented outwards, not self-intersecting, no T-junction, the volume of
 /// the full cells.
 void ExpectValidSurface(const PolygonMesh& mesh, double volume) {
@@ -163,7 +144,7 @@ void ExpectValidSurface(const PolygonMesh& mesh, double volume) {
   EXPECT_TRUE(m->oriented);
   EXPECT_FALSE(m->self_intersecting);
   EXPECT_NEAR(m->signed_volume, volume, 1e-9 * std::max(1.0, std::abs(volume)));
-  EXPECT_EQ(CountTJunctions(mesh), 0u);
+  EXPECT_EQ(testing::CountTJunctions(mesh), 0u);
 }
 
 void ExpectSameMesh(const PolygonMesh& a, const PolygonMesh& b) {

@@ -7,15 +7,15 @@
 // Size 0 is the automatic rule. The scene box is the box of the segments and viewpoints grown
 // by 5 % of each extent (the reconstruct default box_margin) on every side.
 
-#include "engine/io/read_scene.h"
 #include "engine/pipeline/block_partition.h"
-#include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/stage_timer.h"
 #include "partition/arrangement/block_complexes.h"
+#include "tests/bench/study_scene.h"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,19 +31,6 @@ std::vector<double> ParseList(const std::string& text) {
   std::string item;
   while (std::getline(in, item, ',')) out.push_back(std::stod(item));
   return out;
-}
-
-Box3 GrownBox(const Scene& scene) {
-  Box3 box;
-  for (const Segment3& s : scene.segments) {
-    box.Extend(s.p1);
-    box.Extend(s.p2);
-  }
-  for (const Vec3& v : scene.viewpoints) box.Extend(v);
-  const Vec3 grow = 0.05 * box.Extent();
-  box.min -= grow;
-  box.max += grow;
-  return box;
 }
 
 /// User + system CPU seconds of the process so far (all threads).
@@ -64,20 +51,12 @@ int Run(const std::string& path,
         const std::vector<double>& sizes,
         const std::vector<double>& margins,
         bool monolithic) {
-  Expected<Scene> read = io::ReadScene(path, {});
-  if (!read) {
-    std::fprintf(stderr, "%s\n", read.error().ToString().c_str());
-    return 1;
-  }
-  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(read).value(), {});
-  if (!sane) {
-    std::fprintf(stderr, "%s\n", sane.error().ToString().c_str());
-    return 1;
-  }
-  const Scene& scene = sane->scene;
+  const std::optional<Scene> read = ReadStudyScene(path);
+  if (!read) return 1;
+  const Scene& scene = *read;
   RunContext ctx;
   ctx.num_threads = threads;
-  const Box3 box = GrownBox(scene);
+  const Box3 box = StudySceneBox(scene);
   std::printf("%zu segments, %zu planes, box extent %.1f x %.1f x %.1f\n\n",
               scene.segments.size(),
               scene.planes.size(),

@@ -8,18 +8,17 @@
 //   linesurf_stitch_study DIR [threads=2] [sizes=30,15] [margins=1,0]
 
 #include "engine/io/mesh_io.h"
-#include "engine/io/read_scene.h"
 #include "engine/pipeline/block_partition.h"
 #include "engine/pipeline/extract_block_surface.h"
-#include "engine/pipeline/sanitize_scene.h"
-#include "engine/pipeline/stage_timer.h"
 #include "partition/arrangement/cell_geometry.h"
+#include "tests/bench/study_scene.h"
 #include "tests/support/mesh_checks.h"
 #include "tools/eval/mesh_topology.h"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,18 +31,6 @@ std::vector<double> ParseSizes(const std::string& text) {
   std::stringstream in(text);
   for (std::string item; std::getline(in, item, ',');) out.push_back(std::stod(item));
   return out;
-}
-
-/// The box of segments and viewpoints grown by 5 % per side: the box of the block study.
-Box3 SceneBoxOf(const Scene& scene) {
-  Box3 box;
-  for (const Segment3& s : scene.segments) {
-    box.Extend(s.p1);
-    box.Extend(s.p2);
-  }
-  for (const Vec3& v : scene.viewpoints) box.Extend(v);
-  const Vec3 grow = 0.05 * box.Extent();
-  return Box3(box.min - grow, box.max + grow);
 }
 
 struct Timed {
@@ -71,20 +58,13 @@ int Run(const std::string& dir,
         int threads,
         const std::vector<double>& sizes,
         const std::vector<double>& margins) {
-  Expected<Scene> read = io::ReadScene(dir + "/lines.json", {});
+  const std::optional<Scene> read = ReadStudyScene(dir + "/lines.json");
   Expected<PolygonMesh> truth = io::ReadMesh(dir + "/ground_truth.ply");
-  if (!read || !truth) {
-    std::fprintf(stderr, "%s\n", (!read ? read.error() : truth.error()).ToString().c_str());
-    return 1;
-  }
-  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(read).value(), {});
-  if (!sane) {
-    std::fprintf(stderr, "%s\n", sane.error().ToString().c_str());
-    return 1;
-  }
-  const Scene& scene = sane->scene;
+  if (!truth) std::fprintf(stderr, "%s\n", truth.error().ToString().c_str());
+  if (!read || !truth) return 1;
+  const Scene& scene = *read;
   for (Vec3& p : truth->vertices) p = scene.world_from_local.ApplyInverse(p);
-  const Box3 box = SceneBoxOf(scene);
+  const Box3 box = StudySceneBox(scene);
   std::printf("%zu segments, %zu planes\n\n", scene.segments.size(), scene.planes.size());
   std::printf(
       "| block size | margin | blocks | cells | full | surface faces (seam) | mesh faces | "

@@ -8,6 +8,7 @@
 #include "engine/pipeline/extract_block_surface.h"
 #include "partition/arrangement/cell_geometry.h"
 #include "tests/support/mesh_checks.h"
+#include "tests/support/t_junctions.h"
 #include "tools/eval/mesh_topology.h"
 #include "tools/gen/synthesize.h"
 
@@ -24,30 +25,6 @@ struct Family {
   std::string name;
   int size = 0;
 };
-
-/// Output vertices strictly inside output edges (rounded coordinates, relative tolerance).
-std::size_t CountTJunctions(const PolygonMesh& mesh) {
-  std::size_t count = 0;
-  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    const auto face = mesh.Face(f);
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const Vec3& a = mesh.vertices[face[k]];
-      const Vec3& b = mesh.vertices[face[(k + 1) % face.size()]];
-      const Vec3 lo = a.cwiseMin(b);
-      const Vec3 hi = a.cwiseMax(b);
-      const double length = (b - a).norm();
-      for (const Vec3& p : mesh.vertices) {
-        if (p == a || p == b || (p.array() < lo.array() - 1e-9 * length).any() ||
-            (p.array() > hi.array() + 1e-9 * length).any()) {
-          continue;
-        }
-        const double t = (p - a).dot(b - a) / (length * length);
-        if (t > 1e-9 && t < 1 - 1e-9 && (a + t * (b - a) - p).norm() < 1e-9 * length) ++count;
-      }
-    }
-  }
-  return count;
-}
 
 class BlockStitch : public ::testing::TestWithParam<Family> {};
 
@@ -100,7 +77,7 @@ TEST_P(BlockStitch, GroundTruthLabelsGiveAClosedConformingManifold) {
       EXPECT_TRUE(t->oriented);
       EXPECT_FALSE(t->self_intersecting);
       EXPECT_NEAR(t->signed_volume, volume, 1e-9 * volume);
-      EXPECT_EQ(CountTJunctions(r->mesh), 0u);
+      EXPECT_EQ(testing::CountTJunctions(r->mesh), 0u);
       seam_edges += r->stitch.edges_on_block_faces;
     }
   }
