@@ -1,6 +1,7 @@
 #pragma once
 // Per-run context passed explicitly to every stage: cancellation, progress, logging, threads.
-// No global state: several runs may go on at once in one process.
+// No global state: several runs may go on at once in one process. LogSink, LogLevel and
+// Progress are the public ones (linesurf/run_control.h).
 
 #include <atomic>
 #include <chrono>
@@ -9,22 +10,9 @@
 #include <sstream>
 #include <string>
 
+#include "linesurf/run_control.h"
+
 namespace linesurf {
-
-enum class LogLevel { kDebug, kInfo, kWarning, kError };
-
-/// Host-provided log destination. Must be thread-safe.
-class LogSink {
- public:
-  virtual ~LogSink() = default;
-  virtual void Write(LogLevel level, const std::string& stage, const std::string& message) noexcept = 0;
-};
-
-/// Progress of a run: the stage and fractions in [0, 1].
-struct Progress {
-  std::string stage;
-  double stage_fraction = 0.0;
-};
 
 class RunContext {
  public:

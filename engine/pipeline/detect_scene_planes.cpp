@@ -31,6 +31,7 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
     scene.memberships.clear();
     SanitizeResult sane = Take(SanitizeScene(std::move(scene), sanitize));
     out.scene = std::move(sane.scene);
+    out.input_segment = std::move(sane.input_segment);
     out.sanitize_stats = sane.stats;
     out.warnings = std::move(sane.warnings);
     ctx.ThrowIfCancelled(kStage);

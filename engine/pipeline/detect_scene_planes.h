@@ -20,6 +20,8 @@ struct DetectedScene {
   /// Sanitised (local frame, see world_from_local) and holding the detected planes and one
   /// membership per segment; the input's own planes are dropped first (detection ignores them).
   Scene scene;
+  /// Per segment of `scene`, its id in the input scene.
+  IdVector<SegmentId, SegmentId> input_segment;
   SanitizeStats sanitize_stats;
   /// Sanitation's warnings, one sentence each.
   std::vector<std::string> warnings;

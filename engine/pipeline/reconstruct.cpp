@@ -55,19 +55,18 @@ void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, 
   }
 }
 
-}  // namespace
-
-const char* SceneModeName(SceneMode mode) noexcept {
-  switch (mode) {
-    case SceneMode::kExterior:
-      return "exterior";
-    case SceneMode::kInterior:
-      return "interior";
-    case SceneMode::kAuto:
-      return "auto";
-  }
-  return "unknown";
+/// The callbacks of `ctx` with the thread count of `options`: one context for every stage.
+void ConfigureStageContext(const ReconstructOptions& options, const RunContext& ctx,
+                           RunContext& stage_ctx) {
+  stage_ctx.num_threads = options.num_threads != 0 ? options.num_threads : ctx.num_threads;
+  stage_ctx.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
+  stage_ctx.on_progress = [&ctx](const Progress& p) {
+    ctx.ReportProgress(p.stage, p.stage_fraction);
+  };
+  stage_ctx.log = ctx.log;
 }
+
+}  // namespace
 
 Status ReconstructOptions::Validate() const {
   if (Status s = sanitize.Validate(); !s) return s;
@@ -88,32 +87,28 @@ Status ReconstructOptions::Validate() const {
   return {};
 }
 
-Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOptions& options,
-                                        const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> ReconstructResult {
+Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
+                                                       const ReconstructOptions& options,
+                                                       const RunContext& ctx) noexcept {
+  return CatchAll(kStage, [&]() -> PreparedReconstruction {
     if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
-    // One context for every stage: the caller's callbacks, the options' thread count.
     RunContext stage_ctx;
-    stage_ctx.num_threads = options.num_threads != 0 ? options.num_threads : ctx.num_threads;
-    stage_ctx.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
-    stage_ctx.on_progress = [&ctx](const Progress& p) {
-      ctx.ReportProgress(p.stage, p.stage_fraction);
-    };
-    stage_ctx.log = ctx.log;
+    ConfigureStageContext(options, ctx, stage_ctx);
 
-    ReconstructResult result;
-    RunStats& stats = result.stats;
+    PreparedReconstruction prepared;
+    RunStats& stats = prepared.stats;
+    ResultFacts& facts = prepared.facts;
     StageTimer timer;
 
     Scene scene;
-    ResultFacts facts;
     if (options.use_given_planes) {
       timer.Start("sanitize");
       LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(), kInvalidInput, kStage,
                         "use_given_planes: the scene has no planes or plane memberships");
       SanitizeResult sane = Take(SanitizeScene(input, options.sanitize));
       scene = std::move(sane.scene);
-      result.warnings = std::move(sane.warnings);
+      prepared.input_segment = std::move(sane.input_segment);
+      prepared.warnings = std::move(sane.warnings);
       stats.input_segments = sane.stats.input_segments;
       stage_ctx.ThrowIfCancelled(kStage);
       timer.Start("detect");  // nothing to detect: the report lists the same stages either way
@@ -124,14 +119,14 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
       DetectedScene detected =
           Take(SanitizeAndDetectPlanes(input, options.sanitize, detect, stage_ctx, &timer));
       scene = std::move(detected.scene);
-      result.warnings = std::move(detected.warnings);
+      prepared.input_segment = std::move(detected.input_segment);
+      prepared.warnings = std::move(detected.warnings);
       stats.input_segments = detected.sanitize_stats.input_segments;
       facts.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
       stats.capped_blocks = static_cast<std::size_t>(detected.detection_stats.capped_blocks);
       facts.detection_epsilon = detected.detection_stats.epsilon;
       stats.epsilon = std::move(detected.detection_stats.epsilon_estimate);
     }
-    result.world_from_local = scene.world_from_local;
     LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
                       "no plane: nothing to reconstruct from");
     // The derived option bounds, before the complex (ComputeEvidence checks them again).
@@ -144,18 +139,59 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     const Box3 box = SceneBox(scene, options.box_margin);
     partition::CellComplexResult built =
         Take(partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
-    const CellComplex& cx = built.complex;
-    result.warnings.insert(result.warnings.end(), built.warnings.begin(), built.warnings.end());
+    prepared.warnings.insert(prepared.warnings.end(), built.warnings.begin(),
+                             built.warnings.end());
     stats.planes_in_complex = built.stats.planes_used;
+    prepared.complex = std::move(built.complex);
+    timer.Stop();
 
-    timer.Start("evidence");
     // Decided in every mode: a given mode that contradicts the evidence is warned about.
     facts.decision = DecideSceneMode(scene);
     facts.auto_mode = options.scene_mode == SceneMode::kAuto;
-    const bool interior =
+    facts.interior =
         facts.auto_mode ? facts.decision.interior : options.scene_mode == SceneMode::kInterior;
     if (facts.auto_mode) stats.scene_mode_reason = facts.decision.reason;
-    stats.scene_mode = interior ? "interior" : "exterior";
+    stats.scene_mode = facts.interior ? "interior" : "exterior";
+
+    const CellComplex& cx = prepared.complex;
+    facts.planes = scene.planes.size();
+    facts.planes_in_complex = built.stats.planes_used;
+    facts.cells = cx.NumCells();
+    facts.scene_diagonal = box.Extent().norm();
+    stats.stage_seconds = timer.Stages();
+    stats.segments = scene.NumSegments();
+    stats.viewpoints = scene.viewpoints.size();
+    stats.observations = scene.observations.NumItems();
+    stats.planes = scene.planes.size();
+    stats.cells = cx.NumCells();
+    stats.facets = cx.NumFacets();
+    stats.edges = cx.NumEdges();
+    stats.vertices = cx.NumVertices();
+    prepared.scene = std::move(scene);
+    return prepared;
+  });
+}
+
+Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared,
+                                          const ReconstructOptions& options,
+                                          const RunContext& ctx) noexcept {
+  return CatchAll(kStage, [&]() -> ReconstructResult {
+    if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
+    RunContext stage_ctx;
+    ConfigureStageContext(options, ctx, stage_ctx);
+    const Scene& scene = prepared.scene;
+    const CellComplex& cx = prepared.complex;
+    const bool interior = prepared.facts.interior;
+
+    ReconstructResult result;
+    result.stats = prepared.stats;
+    result.warnings = prepared.warnings;
+    result.world_from_local = scene.world_from_local;
+    RunStats& stats = result.stats;
+    ResultFacts facts = prepared.facts;
+    StageTimer timer;
+
+    timer.Start("evidence");
     EvidenceResult evidence =
         Take(ComputeEvidence(cx, scene, options.energy,
                              interior ? BoundaryMode::kInterior : BoundaryMode::kExterior,
@@ -176,10 +212,6 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     const IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 
-    facts.interior = interior;
-    facts.planes = scene.planes.size();
-    facts.planes_in_complex = built.stats.planes_used;
-    facts.cells = cx.NumCells();
     facts.full_cells = static_cast<std::size_t>(
         std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
     CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labeling.labels, facts);
@@ -187,7 +219,6 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     facts.has_data_weight = e.textural_weight > 0.0 || e.structural_weight > 0.0 ||
                             e.visibility_weight > 0.0 || e.viewpoint_prior_weight > 0.0;
     facts.sigma = evidence.stats.sigma;
-    facts.scene_diagonal = box.Extent().norm();
     facts.samples = evidence.stats.samples;
     facts.grazing_samples = evidence.stats.grazing_samples;
     facts.topology = topology;
@@ -210,18 +241,16 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     // Planes back to world coordinates.
     result.planes = scene.planes;
     for (Plane3& p : result.planes) p.point = scene.world_from_local.Apply(p.point);
+    result.memberships = scene.memberships;
+    result.input_segment = prepared.input_segment;
 
-    stats.stage_seconds = timer.Stages();
-    stats.total_seconds = timer.TotalSeconds();
-    stats.segments = scene.NumSegments();
-    stats.viewpoints = scene.viewpoints.size();
-    stats.observations = scene.observations.NumItems();
-    stats.planes = scene.planes.size();
-    for (int k = 0; k < 3; ++k) stats.segments_with_planes[k] = evidence.stats.segments_with_planes[k];
-    stats.cells = cx.NumCells();
-    stats.facets = cx.NumFacets();
-    stats.edges = cx.NumEdges();
-    stats.vertices = cx.NumVertices();
+    stats.stage_seconds.insert(stats.stage_seconds.end(), timer.Stages().begin(),
+                               timer.Stages().end());
+    stats.total_seconds = 0.0;
+    for (const auto& stage : stats.stage_seconds) stats.total_seconds += stage.second;
+    for (int k = 0; k < 3; ++k) {
+      stats.segments_with_planes[k] = evidence.stats.segments_with_planes[k];
+    }
     stats.sigma = evidence.stats.sigma;
     stats.pair_terms = evidence.energy.NumPairs();
     stats.structural_groups = evidence.energy.NumStructuralGroups();
@@ -249,6 +278,13 @@ Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOpt
     stats.peak_memory_bytes = PeakRssBytes();
     return result;
   });
+}
+
+Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOptions& options,
+                                        const RunContext& ctx) noexcept {
+  Expected<PreparedReconstruction> prepared = PrepareReconstruction(input, options, ctx);
+  if (!prepared) return prepared.error();
+  return SolvePrepared(*prepared, options, ctx);
 }
 
 }  // namespace linesurf::pipeline

@@ -16,23 +16,19 @@
 #include "engine/core/scene.h"
 #include "engine/detect/detect_planes.h"
 #include "engine/pipeline/compute_evidence.h"
+#include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/surface_quality.h"
 #include "linesurf/error.h"
+#include "linesurf/options.h"
+#include "linesurf/result.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "solver/lp/lp_backend.h"
 
 namespace linesurf::pipeline {
 
-/// Boundary condition of the scene (see DecideSceneMode for kAuto).
-enum class SceneMode {
-  kExterior,  ///< an object seen from outside: cells on the box are empty
-  kInterior,  ///< a room seen from inside: cells on the box are full
-  kAuto,      ///< decided from the viewpoints and planes (decide_scene_mode.h)
-};
-
-/// "exterior", "interior" or "auto".
-const char* SceneModeName(SceneMode mode) noexcept;
+/// Boundary condition of the scene (see DecideSceneMode for kAuto): the public enum.
+using SceneMode = ::linesurf::SceneMode;
 
 struct ReconstructOptions {
   SanitizeOptions sanitize;
@@ -64,71 +60,56 @@ struct ReconstructOptions {
   [[nodiscard]] Status Validate() const;
 };
 
-/// Numbers of a run (docs/reconstruction.md lists the report keys).
-struct RunStats {
-  /// (stage, wall seconds) in run order: sanitize, detect, complex, evidence, solve, extract.
-  std::vector<std::pair<std::string, double>> stage_seconds;
-  double total_seconds = 0.0;
-  std::size_t input_segments = 0;
-  std::size_t segments = 0;  ///< after sanitation
-  std::size_t viewpoints = 0;
-  std::size_t observations = 0;
-  std::size_t planes = 0;
-  std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes
-  /// The eps of detection (or, with given planes, of the quality figures) and how it was chosen.
-  EpsilonEstimate epsilon;
-  std::size_t segments_with_planes[3] = {0, 0, 0};  ///< on 0, 1, 2 planes
-  std::size_t planes_in_complex = 0;                ///< planes that split the box
-  std::size_t cells = 0;
-  std::size_t facets = 0;
-  std::size_t edges = 0;
-  std::size_t vertices = 0;
-  std::string scene_mode;         ///< "exterior" or "interior" (resolved)
-  std::string scene_mode_reason;  ///< why, for kAuto
-  double sigma = 0.0;
-  std::size_t pair_terms = 0;
-  std::size_t structural_groups = 0;
-  std::size_t parity_groups = 0;
-  std::size_t fixed_cells = 0;
-  std::size_t lp_variables = 0;    ///< LP columns after fixed cells are substituted
-  std::size_t lp_constraints = 0;  ///< LP rows
-  std::size_t lp_nonzeros = 0;
-  std::string solver_backend;
-  std::string solver_status;
-  double objective = 0.0;          ///< energy of the labels (after rounding and improvement)
-  double relaxed_objective = 0.0;  ///< energy of the relaxed solution (LP optimum for clp)
-  double rounded_objective = 0.0;  ///< energy of the labels right after rounding
-  /// Best proven lower bound on the integral optimum (-inf: none) and what proves it
-  /// (solver::LabelingResult::lower_bound_source).
-  double lower_bound = 0.0;
-  std::string lower_bound_source;
-  std::string labeling_method;  ///< solver::LabelingResult::method
-  std::size_t fractional_cells = 0;
-  std::size_t full_cells = 0;
-  std::size_t mesh_vertices = 0;
-  std::size_t mesh_faces = 0;
-  bool mesh_closed = false;
-  bool mesh_manifold = false;
-  double mesh_volume = 0.0;  ///< signed, positive when outward (exterior)
-  std::size_t split_vertices = 0;
-  /// Figures without ground truth (local frame; valid when quality_measured).
-  SurfaceQuality quality;
-  bool quality_measured = false;
-  std::size_t peak_memory_bytes = 0;  ///< process peak RSS at the end of the run
-};
+/// Numbers of a run (docs/reconstruction.md lists the report keys): the public struct.
+using RunStats = ::linesurf::ReconstructStats;
 
 struct ReconstructResult {
   /// The surface in world coordinates, faces oriented from full to empty space.
   PolygonMesh mesh;
-  /// The planes used (world coordinates), and each sanitised segment's memberships.
+  /// The planes used (world coordinates).
   IdVector<PlaneId, Plane3> planes;
+  /// Each sanitised segment's memberships (into `planes`), and its id in the input scene.
+  IdVector<SegmentId, PlaneMembership> memberships;
+  IdVector<SegmentId, SegmentId> input_segment;
   RunStats stats;
   /// Sanitation, detection, complex and evidence warnings, one sentence each.
   std::vector<std::string> warnings;
   Rigid3 world_from_local;
 };
 
-/// @brief Reconstructs the surface of `scene` (world coordinates).
+/// What a reconstruction computes before the evidence: the sanitised scene (local frame) with
+/// its planes, the cell complex of the box, and the resolved boundary condition. It does not
+/// depend on the energy weights, so one preparation serves several solves.
+struct PreparedReconstruction {
+  Scene scene;
+  /// Per segment of `scene`, its id in the input scene.
+  IdVector<SegmentId, SegmentId> input_segment;
+  CellComplex complex;
+  /// What the result checks (JudgeResult) need from the preparation; `interior` is the
+  /// resolved boundary condition.
+  ResultFacts facts;
+  /// Filled up to the complex: stage_seconds of sanitize, detect and complex, input and plane
+  /// counts, complex sizes, scene mode.
+  RunStats stats;
+  std::vector<std::string> warnings;
+};
+
+/// @brief The stages up to the cell complex (sanitise, planes, box, complex, scene mode).
+/// @return kInvalidOptions, kInvalidInput, kDegenerate, kResourceExhausted, kCancelled.
+[[nodiscard]] Expected<PreparedReconstruction> PrepareReconstruction(
+    const Scene& scene, const ReconstructOptions& options, const RunContext& ctx) noexcept;
+
+/// @brief The stages from the evidence on (evidence, LP labelling, surface) with the energy,
+/// solver and output options of `options`; the preparation's own options are not consulted.
+/// Solving a preparation with the options it was prepared with gives exactly Reconstruct's
+/// result.
+/// @return kInvalidOptions, kSolverFailed, kResourceExhausted, kCancelled.
+[[nodiscard]] Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared,
+                                                        const ReconstructOptions& options,
+                                                        const RunContext& ctx) noexcept;
+
+/// @brief Reconstructs the surface of `scene` (world coordinates): PrepareReconstruction, then
+/// SolvePrepared.
 /// @return the stage's error: kInvalidOptions, kInvalidInput (nothing usable, no given planes),
 /// kDegenerate, kSolverFailed, kResourceExhausted, kCancelled. Never throws.
 /// Deterministic: same scene, options and seed give the same mesh for every num_threads.

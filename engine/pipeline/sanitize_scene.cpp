@@ -154,6 +154,7 @@ Expected<SanitizeResult> SanitizeScene(Scene in, const SanitizeOptions& options)
         continue;
       }
       out.segments.push_back(seg);
+      result.input_segment.push_back(id);
       kept_box.Extend(seg.p1);
       kept_box.Extend(seg.p2);
       row.clear();

@@ -61,6 +61,8 @@ struct SanitizeResult {
   /// The repaired scene, in the local frame (world = local + world_from_local.translation).
   Scene scene;
   SanitizeStats stats;
+  /// Per kept segment, its id in the input scene (ascending).
+  IdVector<SegmentId, SegmentId> input_segment;
   /// One sentence per non-zero repair counter, e.g. "412 segments dropped: zero or near-zero
   /// length (< 6.6e-06)".
   std::vector<std::string> warnings;

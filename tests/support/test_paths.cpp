@@ -21,6 +21,15 @@ std::optional<std::filesystem::path> AndalusianInput() {
   return path;
 }
 
+std::filesystem::path SourceDir() {
+  const char* dir = std::getenv("LINESURF_SOURCE_DIR");
+  return dir != nullptr ? std::filesystem::path(dir) : std::filesystem::current_path();
+}
+
+std::filesystem::path ExampleHouseInput() {
+  return SourceDir() / "docs" / "examples" / "house" / "lines.json";
+}
+
 std::filesystem::path BinDir() {
   const char* dir = std::getenv("LINESURF_BIN_DIR");
   if (dir != nullptr) return std::filesystem::path(dir);

@@ -10,6 +10,10 @@ namespace linesurf::testing {
 std::optional<std::filesystem::path> SharedDir();
 /// The Andalusian input JSON, if ../shared is present.
 std::optional<std::filesystem::path> AndalusianInput();
+/// The repository's source directory (LINESURF_SOURCE_DIR, set by CTest).
+std::filesystem::path SourceDir();
+/// docs/examples/house/lines.json, the bundled example scene.
+std::filesystem::path ExampleHouseInput();
 /// The directory holding the built linesurf executable (LINESURF_BIN_DIR, else the directory
 /// of the running test executable: both are built into bin/).
 std::filesystem::path BinDir();

@@ -34,8 +34,19 @@ pkg_check_modules(CBC IMPORTED_TARGET cbc)
 # libmaxflow (Boykov-Kolmogorov max-flow, GPL-3+): pkg-config module "maxflow".
 pkg_check_modules(MAXFLOW REQUIRED IMPORTED_TARGET maxflow)
 
-find_package(PNG REQUIRED)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)
-find_package(CLI11 2.1 CONFIG REQUIRED)
-find_package(GTest CONFIG REQUIRED)
-find_package(benchmark CONFIG REQUIRED)
+
+# Only the tools, tests and benchmarks need these: a library-only build
+# (-DLINESURF_BUILD_TESTS=OFF -DLINESURF_BUILD_BENCHMARKS=OFF -DLINESURF_BUILD_CLI=OFF) does not.
+if(LINESURF_BUILD_TOOLS)
+  find_package(PNG REQUIRED)
+endif()
+if(LINESURF_BUILD_CLI)
+  find_package(CLI11 2.1 CONFIG REQUIRED)
+endif()
+if(LINESURF_BUILD_TESTS)
+  find_package(GTest CONFIG REQUIRED)
+endif()
+if(LINESURF_BUILD_BENCHMARKS)
+  find_package(benchmark CONFIG REQUIRED)
+endif()

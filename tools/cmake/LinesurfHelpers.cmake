@@ -34,7 +34,8 @@ endfunction()
 
 # linesurf_add_test(MODULE <name> SOURCES ... DEPS ... [LABELS ...])
 #   One GoogleTest executable per module; tests are named <module>/Suite.Case.
-#   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent. Test
+#   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent.
+#   LINESURF_SOURCE_DIR points at the repository (bundled examples: docs/examples/house). Test
 #   executables sit in bin/ beside linesurf, which is how CLI tests find it (BinDir()).
 function(linesurf_add_test)
   cmake_parse_arguments(ARG "" "MODULE" "SOURCES;DEPS;LABELS" ${ARGN})
@@ -52,6 +53,7 @@ function(linesurf_add_test)
     TEST_PREFIX "${ARG_MODULE}/"
     PROPERTIES LABELS "${ARG_LABELS}"
       ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared"
+      ENVIRONMENT_MODIFICATION "LINESURF_SOURCE_DIR=set:${PROJECT_SOURCE_DIR}"
     DISCOVERY_TIMEOUT 60)
 endfunction()
 

@@ -21,7 +21,25 @@ enum class ErrorCode {
 };
 
 /// Name of an error code, e.g. "invalid_input".
-const char* ErrorCodeName(ErrorCode code) noexcept;
+[[nodiscard]] inline const char* ErrorCodeName(ErrorCode code) noexcept {
+  switch (code) {
+    case ErrorCode::kInvalidOptions:
+      return "invalid_options";
+    case ErrorCode::kInvalidInput:
+      return "invalid_input";
+    case ErrorCode::kDegenerate:
+      return "degenerate";
+    case ErrorCode::kCancelled:
+      return "cancelled";
+    case ErrorCode::kSolverFailed:
+      return "solver_failed";
+    case ErrorCode::kResourceExhausted:
+      return "resource_exhausted";
+    case ErrorCode::kInternal:
+      return "internal";
+  }
+  return "unknown";
+}
 
 /// An error: its code, the stage that raised it (e.g. "read_reference_json") and a message that
 /// names the offending file, line/index and field.
@@ -31,14 +49,16 @@ struct Error {
   std::string message;
 
   /// "stage: message" for printing.
-  [[nodiscard]] std::string ToString() const;
+  [[nodiscard]] std::string ToString() const {
+    return stage.empty() ? message : stage + ": " + message;
+  }
 };
 
 /// Holds either a T or an Error (mirrors C++23 std::expected).
 template <typename T>
 class [[nodiscard]] Expected {
  public:
-  Expected(T value) : storage_(std::in_place_index<0>, std::move(value)) {}  // NOLINT
+  Expected(T value) : storage_(std::in_place_index<0>, std::move(value)) {}      // NOLINT
   Expected(Error error) : storage_(std::in_place_index<1>, std::move(error)) {}  // NOLINT
 
   [[nodiscard]] bool has_value() const noexcept { return storage_.index() == 0; }

@@ -1,0 +1,146 @@
+#include "engine/api/options_conversion.h"
+
+#include <cmath>
+#include <string>
+
+namespace linesurf::api {
+namespace {
+
+constexpr const char* kStage = "options";
+
+Status Bad(const std::string& field, const std::string& why) {
+  return Error{ErrorCode::kInvalidOptions, kStage, field + " " + why};
+}
+
+/// The engine's own check of the detection fields, named as the facade's.
+Status ValidateDetection(const DetectionParameters& detection) {
+  const Status s = ToEngineOptions(detection, 0).Validate();
+  if (s) return s;
+  return Error{ErrorCode::kInvalidOptions, kStage, "detection: " + s.error().message};
+}
+
+}  // namespace
+
+PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection, std::uint64_t seed) {
+  PlaneDetectionOptions o;
+  o.epsilon = detection.epsilon;
+  o.relative_epsilon = detection.relative_epsilon;
+  o.epsilon_fusion_factor = detection.epsilon_fusion_factor;
+  o.theta_fusion_deg = detection.theta_fusion_deg;
+  o.p_fusion = detection.p_fusion;
+  o.iterations = detection.iterations;
+  o.max_planes = detection.max_planes;
+  o.min_support = detection.min_support;
+  o.collinear_tolerance = detection.collinear_tolerance;
+  o.block_size = detection.block_size;
+  o.block_halo = detection.block_halo;
+  o.block_max_segments = detection.block_max_segments;
+  o.seed = seed;
+  return o;
+}
+
+void SetEngineWeights(const EnergyWeights& weights, pipeline::EnergyOptions& energy) {
+  energy.textural_weight = weights.textural;
+  energy.structural_weight = weights.structural;
+  energy.visibility_weight = weights.visibility;
+  energy.edge_weight = weights.edge;
+  energy.corner_weight = weights.corner;
+  energy.area_weight = weights.area;
+  energy.viewpoint_prior_weight = weights.viewpoint_prior;
+}
+
+pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) {
+  pipeline::ReconstructOptions o;
+  o.planes = ToEngineOptions(options.detection, options.seed);
+  o.use_given_planes = options.planes == PlaneSource::kGiven;
+  SetEngineWeights(options.weights, o.energy);
+  o.energy.sigma = options.sigma;
+  o.energy.samples_per_sigma = options.samples_per_sigma;
+  o.energy.structural_as_textural = options.structural_as_textural;
+  o.solver.backend = SolverBackendName(options.solver.backend);
+  o.solver.time_limit_seconds = options.solver.time_limit_seconds;
+  o.scene_mode = options.scene_mode;
+  o.box_margin = options.box_margin;
+  o.triangulate = options.triangulate;
+  o.num_threads = options.num_threads;
+  o.seed = options.seed;
+  return o;
+}
+
+io::SceneReadOptions ToEngineOptions(const ReadOptions& options) {
+  io::SceneReadOptions o;
+  switch (options.format) {
+    case SceneFormat::kAuto:
+      o.format = io::SceneFormat::kAuto;
+      break;
+    case SceneFormat::kReferenceJson:
+      o.format = io::SceneFormat::kReferenceJson;
+      break;
+    case SceneFormat::kLine3dpp:
+      o.format = io::SceneFormat::kLine3dpp;
+      break;
+    case SceneFormat::kObjLines:
+      o.format = io::SceneFormat::kObjLines;
+      break;
+  }
+  o.nvm = options.nvm;
+  o.colmap = options.colmap;
+  return o;
+}
+
+io::MeshWriteOptions ToEngineOptions(const MeshWriteOptions& options) {
+  io::MeshWriteOptions o;
+  o.ascii = options.ascii;
+  o.triangulate = options.triangulate;
+  return o;
+}
+
+Status ValidateWeights(const EnergyWeights& weights) {
+  const std::pair<const char*, double> named[] = {
+      {"weights.textural", weights.textural},
+      {"weights.structural", weights.structural},
+      {"weights.visibility", weights.visibility},
+      {"weights.edge", weights.edge},
+      {"weights.corner", weights.corner},
+      {"weights.area", weights.area},
+      {"weights.viewpoint_prior", weights.viewpoint_prior}};
+  for (const auto& [name, w] : named) {
+    if (!std::isfinite(w) || w < 0.0) return Bad(name, "must be finite and >= 0");
+  }
+  return {};
+}
+
+}  // namespace linesurf::api
+
+namespace linesurf {
+inline namespace v1 {
+
+Status DetectOptions::Validate() const noexcept {
+  if (Status s = api::ValidateDetection(detection); !s) return s;
+  if (num_threads < 0) return api::Bad("num_threads", "must be >= 0");
+  return {};
+}
+
+Status ReconstructOptions::Validate() const noexcept {
+  using api::Bad;
+  if (!PlaneSourceName(planes)[0]) return Bad("planes", "is not a PlaneSource");
+  if (planes == PlaneSource::kDetect) {
+    if (Status s = api::ValidateDetection(detection); !s) return s;
+  }
+  if (!SceneModeName(scene_mode)[0]) return Bad("scene_mode", "is not a SceneMode");
+  if (Status s = api::ValidateWeights(weights); !s) return s;
+  if (sigma && !(std::isfinite(*sigma) && *sigma > 0.0)) return Bad("sigma", "must be > 0");
+  if (!(samples_per_sigma > 0.0 && samples_per_sigma <= 1000.0)) {
+    return Bad("samples_per_sigma", "must be in (0, 1000]");
+  }
+  if (!SolverBackendName(solver.backend)[0]) return Bad("solver.backend", "is not a SolverBackend");
+  if (!(std::isfinite(solver.time_limit_seconds) && solver.time_limit_seconds >= 0.0)) {
+    return Bad("solver.time_limit_seconds", "must be finite and >= 0");
+  }
+  if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
+  if (num_threads < 0) return Bad("num_threads", "must be >= 0");
+  return {};
+}
+
+}  // namespace v1
+}  // namespace linesurf

@@ -1,0 +1,196 @@
+#include "engine/api/scene_conversion.h"
+
+#include "engine/core/exception.h"
+
+#include <algorithm>
+#include <string>
+
+namespace linesurf::api {
+namespace {
+
+constexpr const char* kStage = "input_scene";
+
+}  // namespace
+
+Expected<Scene> ToEngineScene(const InputScene& input,
+                              std::span<const std::array<double, 4>> residuals) {
+  return CatchAll(kStage, [&]() -> Scene {
+    const std::size_t num_segments = input.segments.size();
+    const std::size_t num_viewpoints = input.viewpoints.size();
+    const std::size_t num_planes = input.planes.size();
+    LINESURF_THROW_IF(!residuals.empty() && residuals.size() != input.observations.size(),
+                      kInvalidInput,
+                      kStage,
+                      residuals.size()
+                          << " residuals for " << input.observations.size() << " observations");
+    Scene scene;
+    scene.segments.reserve(num_segments);
+    for (const Segment& s : input.segments) {
+      scene.segments.push_back(Segment3{ToVec3(s.p1), ToVec3(s.p2)});
+    }
+    scene.viewpoints.reserve(num_viewpoints);
+    for (const Vector3& v : input.viewpoints) scene.viewpoints.push_back(ToVec3(v));
+
+    // Observations grouped by segment with a stable counting sort (relative order kept).
+    std::vector<std::uint32_t> row_start(num_segments + 1, 0);
+    for (std::size_t k = 0; k < input.observations.size(); ++k) {
+      const Observation& o = input.observations[k];
+      LINESURF_THROW_IF(o.segment >= num_segments,
+                        kInvalidInput,
+                        kStage,
+                        "observations[" << k << "].segment = " << o.segment << " is out of range ("
+                                        << num_segments << " segments)");
+      LINESURF_THROW_IF(o.viewpoint >= num_viewpoints,
+                        kInvalidInput,
+                        kStage,
+                        "observations[" << k << "].viewpoint = " << o.viewpoint
+                                        << " is out of range (" << num_viewpoints
+                                        << " viewpoints)");
+      ++row_start[o.segment + 1];
+    }
+    for (std::size_t s = 0; s < num_segments; ++s) row_start[s + 1] += row_start[s];
+    std::vector<std::size_t> order(input.observations.size());
+    std::vector<std::uint32_t> fill(row_start.begin(), row_start.end() - 1);
+    for (std::size_t k = 0; k < input.observations.size(); ++k) {
+      order[fill[input.observations[k].segment]++] = k;
+    }
+    scene.observations.Reserve(num_segments, order.size());
+    std::vector<ViewpointId> row;
+    for (std::size_t s = 0; s < num_segments; ++s) {
+      row.clear();
+      for (std::uint32_t i = row_start[s]; i < row_start[s + 1]; ++i) {
+        row.emplace_back(static_cast<std::size_t>(input.observations[order[i]].viewpoint));
+      }
+      scene.observations.AddRow(row);
+    }
+    if (!residuals.empty()) {
+      scene.residuals.reserve(order.size());
+      for (const std::size_t k : order) scene.residuals.push_back(residuals[k]);
+    }
+
+    scene.planes.reserve(num_planes);
+    for (const Plane& p : input.planes) {
+      scene.planes.push_back(Plane3{ToVec3(p.point), ToVec3(p.normal)});
+    }
+    LINESURF_THROW_IF(num_planes == 0 && !input.memberships.empty(),
+                      kInvalidInput,
+                      kStage,
+                      input.memberships.size() << " memberships but no planes");
+    if (num_planes > 0) scene.memberships.resize(num_segments);
+    for (std::size_t k = 0; k < input.memberships.size(); ++k) {
+      const Membership& m = input.memberships[k];
+      LINESURF_THROW_IF(m.segment >= num_segments,
+                        kInvalidInput,
+                        kStage,
+                        "memberships[" << k << "].segment = " << m.segment << " is out of range ("
+                                       << num_segments << " segments)");
+      LINESURF_THROW_IF(m.plane >= num_planes,
+                        kInvalidInput,
+                        kStage,
+                        "memberships[" << k << "].plane = " << m.plane << " is out of range ("
+                                       << num_planes << " planes)");
+      PlaneMembership& entry = scene.memberships[SegmentId(static_cast<std::size_t>(m.segment))];
+      const PlaneId plane(static_cast<std::size_t>(m.plane));
+      LINESURF_THROW_IF(!entry.Contains(plane) && !entry.Add(plane),
+                        kInvalidInput,
+                        kStage,
+                        "memberships[" << k << "]: segment " << m.segment
+                                       << " is already on two planes (at most two)");
+    }
+    return scene;
+  });
+}
+
+SceneData ToSceneData(const Scene& scene) {
+  const Rigid3& t = scene.world_from_local;
+  SceneData data;
+  data.segments.reserve(scene.NumSegments());
+  for (const Segment3& s : scene.segments) {
+    data.segments.push_back(Segment{ToVector3(t.Apply(s.p1)), ToVector3(t.Apply(s.p2))});
+  }
+  data.viewpoints.reserve(scene.viewpoints.size());
+  for (const Vec3& v : scene.viewpoints) data.viewpoints.push_back(ToVector3(t.Apply(v)));
+  data.observations.reserve(scene.observations.NumItems());
+  for (std::size_t s = 0; s < scene.observations.NumRows(); ++s) {
+    for (const ViewpointId v : scene.observations[SegmentId(s)]) {
+      data.observations.push_back(
+          Observation{static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(v.value())});
+    }
+  }
+  data.planes = ToWorldPlanes(scene.planes, t);
+  for (std::size_t s = 0; s < scene.memberships.size(); ++s) {
+    const PlaneMembership& m = scene.memberships[SegmentId(s)];
+    for (std::uint8_t k = 0; k < m.count; ++k) {
+      data.memberships.push_back(Membership{static_cast<std::uint32_t>(s),
+                                            static_cast<std::uint32_t>(m.planes[k].value())});
+    }
+  }
+  data.residuals = scene.residuals;
+  data.extra_fields = scene.extra_fields;
+  return data;
+}
+
+std::vector<Membership> ToMemberships(const IdVector<SegmentId, PlaneMembership>& memberships,
+                                      const IdVector<SegmentId, SegmentId>& input_segment) {
+  std::vector<Membership> out;
+  for (std::size_t s = 0; s < memberships.size(); ++s) {
+    const PlaneMembership& m = memberships[SegmentId(s)];
+    const std::uint32_t segment = input_segment[SegmentId(s)].value();
+    const std::size_t first = out.size();
+    for (std::uint8_t k = 0; k < m.count; ++k) {
+      out.push_back(Membership{segment, static_cast<std::uint32_t>(m.planes[k].value())});
+    }
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(first),
+              out.end(),
+              [](const Membership& a, const Membership& b) { return a.plane < b.plane; });
+  }
+  return out;
+}
+
+std::vector<Plane> ToWorldPlanes(const IdVector<PlaneId, Plane3>& planes,
+                                 const Rigid3& world_from_local) {
+  std::vector<Plane> out;
+  out.reserve(planes.size());
+  for (const Plane3& p : planes) {
+    out.push_back(Plane{ToVector3(world_from_local.Apply(p.point)), ToVector3(p.normal)});
+  }
+  return out;
+}
+
+Mesh ToMesh(const PolygonMesh& mesh) {
+  Mesh out;
+  out.vertices.reserve(mesh.vertices.size());
+  for (const Vec3& v : mesh.vertices) out.vertices.push_back(ToVector3(v));
+  out.face_offsets = mesh.face_offsets;
+  out.face_indices = mesh.face_indices;
+  return out;
+}
+
+Expected<PolygonMesh> ToPolygonMesh(const Mesh& mesh) {
+  const auto bad = [](const std::string& why) -> Error {
+    return Error{ErrorCode::kInvalidInput, "mesh", why};
+  };
+  if (mesh.face_offsets.empty() || mesh.face_offsets.front() != 0) {
+    return bad("face_offsets must start with 0");
+  }
+  for (std::size_t f = 0; f + 1 < mesh.face_offsets.size(); ++f) {
+    if (mesh.face_offsets[f + 1] < mesh.face_offsets[f]) {
+      return bad("face_offsets[" + std::to_string(f + 1) + "] is smaller than the one before");
+    }
+  }
+  if (mesh.face_offsets.back() != mesh.face_indices.size()) {
+    return bad("the last face offset (" + std::to_string(mesh.face_offsets.back()) +
+               ") is not the number of face indices (" + std::to_string(mesh.face_indices.size()) +
+               ")");
+  }
+  return CatchAll("mesh", [&]() -> PolygonMesh {
+    PolygonMesh out;
+    out.vertices.reserve(mesh.vertices.size());
+    for (const Vector3& v : mesh.vertices) out.vertices.push_back(ToVec3(v));
+    out.face_offsets = mesh.face_offsets;
+    out.face_indices = mesh.face_indices;
+    return out;
+  });
+}
+
+}  // namespace linesurf::api

@@ -1,0 +1,121 @@
+#pragma once
+/// @file linesurf.h
+/// @brief The linesurf facade: watertight piecewise-planar meshes from 3D line segments seen
+/// from known viewpoints (Langlois, Boulch & Marlet, 3DV 2019). Include only this header.
+///
+/// Every call is synchronous, re-entrant and noexcept: errors come back as Expected<T> (codes in
+/// error.h); the library never prints, never aborts and keeps no global state. Determinism:
+/// the same input, options and seed give the same output bytes for any thread count.
+///
+/// @code
+///   linesurf::Expected<linesurf::ReadSceneResult> read = linesurf::ReadScene("lines.json");
+///   if (!read) return fail(read.error());
+///   linesurf::ReconstructOptions options;
+///   options.scene_mode = linesurf::SceneMode::kExterior;
+///   auto result = linesurf::Reconstruct(read->scene.View(), options);
+///   if (!result) return fail(result.error());
+///   linesurf::Status written = linesurf::WriteMesh("house.ply", result->mesh);
+/// @endcode
+///
+/// Threads: work runs in a oneTBB task arena of ReconstructOptions::num_threads (0 = all
+/// cores), shared with the host's own oneTBB scheduler; the library never sets process-wide
+/// limits (tbb::global_control).
+
+#include "linesurf/error.h"
+#include "linesurf/export.h"
+#include "linesurf/options.h"
+#include "linesurf/result.h"
+#include "linesurf/run_control.h"
+#include "linesurf/types.h"
+#include "linesurf/version.h"
+
+#include <memory>
+#include <string>
+
+namespace linesurf {
+inline namespace v1 {
+
+/// @brief The whole method: sanitise, planes (detected or given), cell complex, evidence, LP
+/// labelling, surface extraction.
+/// @param[in] scene views of the host's arrays, read during the call only.
+/// @return kInvalidOptions (bad options), kInvalidInput (an index out of range, nothing usable,
+/// no given planes), kDegenerate (no plane), kSolverFailed, kResourceExhausted, kCancelled,
+/// kInternal.
+[[nodiscard]] LINESURF_API Expected<ReconstructResult> Reconstruct(
+    const InputScene& scene,
+    const ReconstructOptions& options,
+    const RunControl& control = {}) noexcept;
+
+/// @brief Plane detection only (the scene is sanitised first; given planes are ignored).
+/// @return kInvalidOptions, kInvalidInput, kCancelled, kResourceExhausted, kInternal.
+[[nodiscard]] LINESURF_API Expected<DetectResult> DetectPlanes(
+    const InputScene& scene, const DetectOptions& options, const RunControl& control = {}) noexcept;
+
+/// @brief A prepared reconstruction, for solving again with other weights without detecting
+/// planes or building the cell complex again (the reference's line_based_recons_param
+/// workflow): Prepare once, then Solve as often as wanted.
+///
+/// Prepare runs sanitation, plane detection (or takes the given planes), builds the cell
+/// complex and decides the scene mode. Solve computes the evidence with the given weights,
+/// solves the LP and extracts the surface. Solve(options.weights) gives exactly the mesh of
+/// Reconstruct(scene, options). Only the EnergyWeights change between solves; sigma,
+/// samples_per_sigma, structural_as_textural, the solver options and triangulate stay those
+/// given to Prepare.
+///
+/// A Reconstruction owns its data (the scene is copied); it is movable, not copyable. Solve is
+/// const and may run concurrently on one object from several threads.
+class LINESURF_API Reconstruction {
+ public:
+  /// @return the errors of Reconstruct up to the cell complex.
+  [[nodiscard]] static Expected<Reconstruction> Prepare(const InputScene& scene,
+                                                        const ReconstructOptions& options,
+                                                        const RunControl& control = {}) noexcept;
+
+  /// @return the errors of Reconstruct from the evidence on; kInvalidOptions for a negative
+  /// or non-finite weight.
+  [[nodiscard]] Expected<ReconstructResult> Solve(const EnergyWeights& weights,
+                                                  const RunControl& control = {}) const noexcept;
+
+  /// The options given to Prepare.
+  [[nodiscard]] const ReconstructOptions& Options() const noexcept;
+
+  Reconstruction(Reconstruction&&) noexcept;
+  Reconstruction& operator=(Reconstruction&&) noexcept;
+  ~Reconstruction();
+
+ private:
+  struct Impl;
+  explicit Reconstruction(std::unique_ptr<Impl> impl) noexcept;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// @brief Reads a scene file: reference JSON, Line3D++ .txt (with options.nvm or
+/// options.colmap) or OBJ lines (docs/formats.md). World coordinates as stored.
+/// @return kInvalidOptions (unknown format, missing or extra camera files), kInvalidInput
+/// naming the file and the line or JSON path at fault.
+[[nodiscard]] LINESURF_API Expected<ReadSceneResult> ReadScene(
+    const std::string& path, const ReadOptions& options = {}) noexcept;
+
+/// @brief The validation every reconstruction starts with, on its own: drops non-finite and
+/// zero-length segments, bad viewpoints, observations and planes, repeated memberships (each
+/// counted in the warnings; docs/formats.md lists the repairs). Residuals and extra fields are
+/// kept for the segments that stay.
+/// @return kInvalidInput (an index out of range, no usable segment left).
+[[nodiscard]] LINESURF_API Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept;
+
+/// @brief Writes `scene` as reference JSON (planes and plane_index when it has them). The same
+/// scene always gives the same bytes; written to a temporary name and renamed.
+/// @return kInvalidInput (an index out of range, a non-finite value, an unwritable path).
+[[nodiscard]] LINESURF_API Status WriteScene(const std::string& path,
+                                             const SceneData& scene) noexcept;
+
+/// @brief Writes a mesh as PLY (binary unless options.ascii), OBJ or OFF, chosen by the
+/// extension; the same bytes as `linesurf reconstruct -o`. Written to a temporary name and
+/// renamed.
+/// @return kInvalidInput (unknown extension, bad face, non-finite coordinate, unwritable path).
+[[nodiscard]] LINESURF_API Status WriteMesh(const std::string& path,
+                                            const Mesh& mesh,
+                                            const MeshWriteOptions& options = {}) noexcept;
+
+}  // namespace v1
+}  // namespace linesurf

@@ -1,0 +1,234 @@
+#pragma once
+/// @file options.h
+/// @brief Options of the facade calls: plain aggregates with defaults; Validate() names the first
+/// offending field. Lengths are in scene units (metres for metric scenes), angles in degrees.
+/// The defaults are the engine's (docs/user/embedding.md lists them with their rationale).
+
+#include "linesurf/error.h"
+#include "linesurf/export.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace linesurf {
+inline namespace v1 {
+
+/// RANSAC plane detection with multiple support (docs/plane_detection.md).
+struct DetectionParameters {
+  /// Inlier tolerance eps (> 0). Paper: 2 cm on metric scenes.
+  double epsilon = 0.02;
+  /// If set, eps = relative_epsilon x scene bounding-box diagonal instead of `epsilon`, for
+  /// structure-from-motion scenes in arbitrary units. Range (0, 0.5).
+  std::optional<double> relative_epsilon;
+  /// Fusion thickness as a multiple of eps (>= 1; paper: 3).
+  double epsilon_fusion_factor = 3.0;
+  /// Planes closer than this angle may merge (degrees, (0, 90); paper: 10).
+  double theta_fusion_deg = 10.0;
+  /// Minimum shared support for a merge, fraction of the smaller plane's inliers ([0, 1]; 0.2).
+  double p_fusion = 0.2;
+  /// Maximum candidate pairs per plane N_iter (>= 1; paper: 50000; an adaptive stop usually
+  /// ends earlier).
+  std::int64_t iterations = 50000;
+  /// Maximum number of planes N_max (>= 1; paper: 160); per block with block_size > 0.
+  std::int32_t max_planes = 160;
+  /// Minimum inlier segments of a plane (>= 2; the reference uses 3).
+  std::int32_t min_support = 3;
+  /// Segments on one infinite line within this x eps are detected as one line ([0, 0.5]; 0 =
+  /// off).
+  double collinear_tolerance = 1e-3;
+  /// Per-block detection: cube side (>= 0; 0 = the whole scene is one block, the monolithic
+  /// method). Use about one building's size on city-scale scenes.
+  double block_size = 0.0;
+  /// Halo of a block, fraction of its side ([0, 0.5)).
+  double block_halo = 0.1;
+  /// A block with more lines than this is split into 8, recursively (>= 0; 0 = never).
+  std::int64_t block_max_segments = 10000;
+};
+
+/// Options of DetectPlanes.
+struct DetectOptions {
+  DetectionParameters detection;
+  /// Worker threads: 0 = automatic, 1 = serial (>= 0). Results do not depend on it.
+  int num_threads = 0;
+  /// Seed of every random stream: same input + options + seed => same planes.
+  std::uint64_t seed = 0;
+
+  /// @return kInvalidOptions naming the first field out of its documented range.
+  [[nodiscard]] LINESURF_API Status Validate() const noexcept;
+};
+
+/// Where the planes of a reconstruction come from.
+enum class PlaneSource {
+  kDetect,  ///< detect them from the segments (DetectionParameters)
+  kGiven,   ///< use InputScene::planes and memberships (fails when the scene has none)
+};
+
+/// Boundary condition of the scene box.
+enum class SceneMode {
+  kExterior,  ///< an object seen from outside: cells on the box are empty
+  kInterior,  ///< a room seen from inside: cells on the box are full
+  kAuto,      ///< decided from the viewpoints and planes (reported in the stats)
+};
+
+/// LP backend of the labelling (docs/solver.md).
+enum class SolverBackend {
+  kAuto,     ///< maxflow when exact, else band / clp / pdhg by model size
+  kClp,      ///< COIN-OR Clp dual simplex: exact, the reference
+  kMaxflow,  ///< exact max-flow; refused (kInvalidOptions) on energies with higher-order terms
+  kPdhg,     ///< first-order primal-dual: approximate optimum, fast on large complexes
+  kBand,     ///< max-flow, then the LP of the cells near that surface (heuristic)
+};
+
+/// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
+/// Reconstruction::Solve without rebuilding the cell complex.
+struct EnergyWeights {
+  /// Textural primitive term (>= 0; paper: 1).
+  double textural = 1.0;
+  /// Structural primitive term (>= 0; paper: 1, the reference's -cp).
+  double structural = 1.0;
+  /// Visibility lambda_vis (>= 0; paper: 0.1; the reference's Andalusian demo used 1).
+  double visibility = 0.1;
+  /// Edge regularisation lambda_edge per length / sigma (>= 0; paper: 0.01).
+  double edge = 0.01;
+  /// Corner regularisation lambda_corner per corner (>= 0; paper: 0.01).
+  double corner = 0.01;
+  /// Surface area per area / sigma^2 (>= 0; default 0: lines are too sparse for it).
+  double area = 0.0;
+  /// Viewpoint prior per observation when the viewpoint's cell is full (>= 0; reference: 1).
+  double viewpoint_prior = 1.0;
+};
+
+/// Options of the LP labelling.
+struct SolverOptions {
+  SolverBackend backend = SolverBackend::kAuto;
+  /// Wall-time limit of the solve in seconds (>= 0; 0 = none); exceeding it is kSolverFailed.
+  double time_limit_seconds = 0.0;
+};
+
+/// Options of Reconstruct and Reconstruction::Prepare.
+struct ReconstructOptions {
+  PlaneSource planes = PlaneSource::kDetect;
+  /// Plane detection (ignored with PlaneSource::kGiven); its seed is `seed`.
+  DetectionParameters detection;
+  SceneMode scene_mode = SceneMode::kAuto;
+  EnergyWeights weights;
+  /// Scale sigma of the evidence (> 0). Unset: the median segment length, so the weights mean
+  /// the same at any scene scale.
+  std::optional<double> sigma;
+  /// Evidence samples per sigma of segment length ((0, 1000]; 4).
+  double samples_per_sigma = 4.0;
+  /// Ablation: structural segments count as two textural ones.
+  bool structural_as_textural = false;
+  SolverOptions solver;
+  /// The box is the bounding box of segments and viewpoints grown on each side by this fraction
+  /// of its extent ((0, 10]; 0.05 as the reference, so viewpoints lie in bounded cells).
+  double box_margin = 0.05;
+  /// Triangulate the output faces (default: convex polygons).
+  bool triangulate = false;
+  /// Worker threads: 0 = automatic, 1 = serial (>= 0). Results do not depend on it.
+  int num_threads = 0;
+  /// Seed of every random stream: same input + options + seed => same mesh bytes.
+  std::uint64_t seed = 0;
+
+  /// @return kInvalidOptions naming the first field out of its documented range.
+  [[nodiscard]] LINESURF_API Status Validate() const noexcept;
+};
+
+/// Input file formats of ReadScene.
+enum class SceneFormat {
+  kAuto,           ///< from the extension: .json, .txt (Line3D++), .obj
+  kReferenceJson,  ///< the paper's reference JSON
+  kLine3dpp,       ///< Line3D++ .txt, camera centres from `nvm` or `colmap`
+  kObjLines,       ///< OBJ v + l records: segments without views (detection only)
+};
+
+/// Options of ReadScene.
+struct ReadOptions {
+  SceneFormat format = SceneFormat::kAuto;
+  /// Line3D++ only: the VisualSfM .nvm whose camera list the Line3D++ camera ids index.
+  std::string nvm;
+  /// Line3D++ only: a COLMAP text model directory (or its images.txt).
+  std::string colmap;
+};
+
+/// Options of WriteMesh.
+struct MeshWriteOptions {
+  /// PLY only: ASCII instead of binary little-endian (OBJ and OFF are always text).
+  bool ascii = false;
+  /// Split faces into triangle fans (exact for linesurf's convex faces).
+  bool triangulate = false;
+};
+
+/// "detect" / "given" ("" for a value outside the enum).
+[[nodiscard]] inline const char* PlaneSourceName(PlaneSource source) noexcept {
+  switch (source) {
+    case PlaneSource::kDetect:
+      return "detect";
+    case PlaneSource::kGiven:
+      return "given";
+  }
+  return "";
+}
+
+/// "exterior" / "interior" / "auto" ("" for a value outside the enum).
+[[nodiscard]] inline const char* SceneModeName(SceneMode mode) noexcept {
+  switch (mode) {
+    case SceneMode::kExterior:
+      return "exterior";
+    case SceneMode::kInterior:
+      return "interior";
+    case SceneMode::kAuto:
+      return "auto";
+  }
+  return "";
+}
+
+/// "auto" / "clp" / "maxflow" / "pdhg" / "band" ("" for a value outside the enum).
+[[nodiscard]] inline const char* SolverBackendName(SolverBackend backend) noexcept {
+  switch (backend) {
+    case SolverBackend::kAuto:
+      return "auto";
+    case SolverBackend::kClp:
+      return "clp";
+    case SolverBackend::kMaxflow:
+      return "maxflow";
+    case SolverBackend::kPdhg:
+      return "pdhg";
+    case SolverBackend::kBand:
+      return "band";
+  }
+  return "";
+}
+
+namespace internal {
+
+/// The enumerator of E among the first `count` whose name is `name`.
+template <typename E>
+std::optional<E> EnumFromName(std::string_view name,
+                              int count,
+                              const char* (*name_of)(E) noexcept) noexcept {
+  for (int i = 0; i < count; ++i) {
+    if (name == name_of(static_cast<E>(i))) return static_cast<E>(i);
+  }
+  return std::nullopt;
+}
+
+}  // namespace internal
+
+/// The enumerator a name above denotes; std::nullopt for any other string.
+[[nodiscard]] inline std::optional<PlaneSource> PlaneSourceFromName(
+    std::string_view name) noexcept {
+  return internal::EnumFromName<PlaneSource>(name, 2, &PlaneSourceName);
+}
+[[nodiscard]] inline std::optional<SceneMode> SceneModeFromName(std::string_view name) noexcept {
+  return internal::EnumFromName<SceneMode>(name, 3, &SceneModeName);
+}
+[[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
+    std::string_view name) noexcept {
+  return internal::EnumFromName<SolverBackend>(name, 5, &SolverBackendName);
+}
+
+}  // namespace v1
+}  // namespace linesurf
