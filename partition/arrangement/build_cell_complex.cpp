@@ -16,6 +16,8 @@ namespace linesurf::partition {
 namespace {
 
 constexpr char kStage[] = "cell_complex";
+/// Cells visited between two cancellation polls inside one plane insertion.
+constexpr std::uint32_t kCancelPollCells = 4096;
 
 /// Relative rounding-error bound of the double filter that evaluates a plane over a box of
 /// coordinates (a handful of products and sums; generous against the ~4u worst case).
@@ -50,7 +52,9 @@ class Builder {
 
   std::vector<Eigen::Vector4d> planes;  // complex planes: 6 box faces, then inserted planes
 
-  void Insert(std::uint32_t pid);
+  /// Splits every cell `pid` crosses; polls `ctx` every kCancelPollCells cells (one late
+  /// insertion on Andalusian takes over a second). A cancelled builder is discarded.
+  void Insert(std::uint32_t pid, const RunContext& ctx);
   [[nodiscard]] std::size_t NumCells() const { return cell_facets_.size(); }
   CellComplex Finish(const Box3& box, const std::vector<PlaneId>& sources);
 
@@ -310,12 +314,13 @@ void Builder::SplitCell(std::uint32_t c) {
   UpdateCellBounds(cm);
 }
 
-void Builder::Insert(std::uint32_t pid) {
+void Builder::Insert(std::uint32_t pid, const RunContext& ctx) {
   pid_ = pid;
   ++stamp_;
   edge_memo_.clear();
   const std::size_t num_cells = cell_facets_.size();
   for (std::uint32_t c = 0; c < num_cells; ++c) {
+    if (c % kCancelPollCells == kCancelPollCells - 1) ctx.ThrowIfCancelled(kStage);
     if (BoxSide(planes[pid], cell_lo_[c], cell_hi_[c]) != 0) continue;
     bool has_pos = false, has_neg = false;
     for (const std::uint32_t f : cell_facets_[c]) {
@@ -586,7 +591,7 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
 
   for (std::size_t k = 0; k < sources.size(); ++k) {
     ctx.ThrowIfCancelled(kStage);
-    builder.Insert(static_cast<std::uint32_t>(kNumBoxPlanes + k));
+    builder.Insert(static_cast<std::uint32_t>(kNumBoxPlanes + k), ctx);
     LINESURF_THROW_IF(options.max_cells > 0 && builder.NumCells() > options.max_cells,
                       kResourceExhausted, kStage,
                       "more than max_cells = " << options.max_cells << " cells after "
