@@ -82,6 +82,9 @@ io::SceneReadOptions ToEngineOptions(const ReadOptions& options) {
     case SceneFormat::kObjLines:
       o.format = io::SceneFormat::kObjLines;
       break;
+    case SceneFormat::kLimapTracks:
+      o.format = io::SceneFormat::kLimapTracks;
+      break;
   }
   o.nvm = options.nvm;
   o.colmap = options.colmap;

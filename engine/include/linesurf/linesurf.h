@@ -89,8 +89,8 @@ class LINESURF_API Reconstruction {
   std::unique_ptr<Impl> impl_;
 };
 
-/// @brief Reads a scene file: reference JSON, Line3D++ .txt (with options.nvm or
-/// options.colmap) or OBJ lines (docs/formats.md). World coordinates as stored.
+/// @brief Reads a scene file: reference JSON, Line3D++ .txt or LIMAP alltracks.txt (with
+/// options.nvm or options.colmap) or OBJ lines (docs/formats.md). World coordinates as stored.
 /// @return kInvalidOptions (unknown format, missing or extra camera files), kInvalidInput
 /// naming the file and the line or JSON path at fault.
 [[nodiscard]] LINESURF_API Expected<ReadSceneResult> ReadScene(

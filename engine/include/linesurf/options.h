@@ -138,18 +138,19 @@ struct ReconstructOptions {
 
 /// Input file formats of ReadScene.
 enum class SceneFormat {
-  kAuto,           ///< from the extension: .json, .txt (Line3D++), .obj
+  kAuto,           ///< from the extension (.json, .obj) and, for .txt, the first line
   kReferenceJson,  ///< the paper's reference JSON
   kLine3dpp,       ///< Line3D++ .txt, camera centres from `nvm` or `colmap`
   kObjLines,       ///< OBJ v + l records: segments without views (detection only)
+  kLimapTracks,    ///< LIMAP alltracks.txt, camera centres from `colmap` (or `nvm`)
 };
 
 /// Options of ReadScene.
 struct ReadOptions {
   SceneFormat format = SceneFormat::kAuto;
-  /// Line3D++ only: the VisualSfM .nvm whose camera list the Line3D++ camera ids index.
+  /// Line3D++ and LIMAP only: the VisualSfM .nvm whose camera list the camera ids index.
   std::string nvm;
-  /// Line3D++ only: a COLMAP text model directory (or its images.txt).
+  /// Line3D++ and LIMAP only: a COLMAP model directory, text or binary (or its images file).
   std::string colmap;
 };
 
