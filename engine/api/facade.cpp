@@ -9,6 +9,7 @@
 #include "engine/api/scene_conversion.h"
 #include "engine/core/exception.h"
 #include "engine/io/reference_json.h"
+#include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/sanitize_scene.h"
 
 namespace linesurf {
@@ -47,15 +48,12 @@ Expected<DetectResult> DetectPlanes(const InputScene& scene,
                                     const RunControl& control) noexcept {
   return CatchAll("detect", [&]() -> DetectResult {
     ThrowIfInvalid(options.Validate());
-    Scene engine_scene = ValueOrThrow(api::ToEngineScene(scene));
-    engine_scene.planes.clear();  // detection ignores given planes
-    engine_scene.memberships.clear();
-    pipeline::SanitizeResult sane =
-        ValueOrThrow(pipeline::SanitizeScene(std::move(engine_scene), {}));
     const api::HostContext host(control, options.num_threads);
-    const PlaneDetectionResult detected = ValueOrThrow(::linesurf::DetectPlanes(
-        sane.scene, api::ToEngineOptions(options.detection, options.seed), host.Context()));
-    return api::ToPublicResult(detected, sane);
+    return api::ToPublicResult(ValueOrThrow(
+        pipeline::SanitizeAndDetectPlanes(ValueOrThrow(api::ToEngineScene(scene)),
+                                          {},
+                                          api::ToEngineOptions(options.detection, options.seed),
+                                          host.Context())));
   });
 }
 

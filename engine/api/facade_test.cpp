@@ -60,6 +60,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   const pipeline::ReconstructOptions e;
   const DetectionParameters& d = o.detection;
   EXPECT_EQ(d.epsilon, e.planes.epsilon);
+  EXPECT_EQ(d.epsilon_over_noise, e.planes.epsilon_over_noise);
   EXPECT_EQ(d.relative_epsilon, e.planes.relative_epsilon);
   EXPECT_EQ(d.epsilon_fusion_factor, e.planes.epsilon_fusion_factor);
   EXPECT_EQ(d.theta_fusion_deg, e.planes.theta_fusion_deg);
@@ -86,6 +87,10 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.solver.time_limit_seconds, e.solver.time_limit_seconds);
   EXPECT_EQ(o.scene_mode, e.scene_mode);
   EXPECT_EQ(o.box_margin, e.box_margin);
+  EXPECT_EQ(o.measure_quality, e.measure_quality);
+  EXPECT_EQ(o.quality.fit_factor, e.quality.fit_factor);
+  EXPECT_EQ(o.quality.samples_per_segment, e.quality.samples_per_segment);
+  EXPECT_EQ(o.quality.min_lines_per_component, e.quality.min_lines_per_component);
   EXPECT_EQ(o.triangulate, e.triangulate);
   EXPECT_EQ(o.num_threads, e.num_threads);
   EXPECT_EQ(o.seed, e.seed);
@@ -99,6 +104,7 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
   const Case cases[] = {
       {"epsilon", [](ReconstructOptions& o) { o.detection.epsilon = -1.0; }},
       {"relative_epsilon", [](ReconstructOptions& o) { o.detection.relative_epsilon = 0.7; }},
+      {"epsilon_over_noise", [](ReconstructOptions& o) { o.detection.epsilon_over_noise = 0.0; }},
       {"max_planes", [](ReconstructOptions& o) { o.detection.max_planes = 0; }},
       {"weights.visibility", [](ReconstructOptions& o) { o.weights.visibility = -0.1; }},
       {"weights.corner", [](ReconstructOptions& o) { o.weights.corner = std::nan(""); }},
@@ -109,6 +115,9 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
        [](ReconstructOptions& o) { o.solver.time_limit_seconds = -1.0; }},
       {"scene_mode", [](ReconstructOptions& o) { o.scene_mode = SceneMode(7); }},
       {"box_margin", [](ReconstructOptions& o) { o.box_margin = 0.0; }},
+      {"quality.fit_factor", [](ReconstructOptions& o) { o.quality.fit_factor = 0.0; }},
+      {"quality.samples_per_segment",
+       [](ReconstructOptions& o) { o.quality.samples_per_segment = 0; }},
       {"num_threads", [](ReconstructOptions& o) { o.num_threads = -2; }},
   };
   for (const Case& c : cases) {
@@ -142,7 +151,9 @@ TEST(FacadeOptions, NamesRoundTrip) {
                           SolverBackend::kClp,
                           SolverBackend::kMaxflow,
                           SolverBackend::kPdhg,
-                          SolverBackend::kBand}) {
+                          SolverBackend::kBand,
+                          SolverBackend::kCbc,
+                          SolverBackend::kClpBarrier}) {
     EXPECT_EQ(SolverBackendFromName(SolverBackendName(b)), b);
   }
   for (SceneMode m : {SceneMode::kExterior, SceneMode::kInterior, SceneMode::kAuto}) {
@@ -276,6 +287,14 @@ TEST(FacadeReconstruct, HouseEqualsThePipeline) {
   EXPECT_TRUE(facade->stats.mesh_closed);
   EXPECT_TRUE(facade->stats.mesh_manifold);
   EXPECT_EQ(facade->stats.cells, engine->stats.cells);
+  // The run's eps and quality figures come out as the engine reports them.
+  EXPECT_FALSE(facade->stats.epsilon.source.empty());
+  EXPECT_EQ(facade->stats.epsilon.source, engine->stats.epsilon.source);
+  EXPECT_EQ(facade->stats.epsilon.epsilon, engine->stats.epsilon.epsilon);
+  ASSERT_TRUE(facade->stats.quality_measured);
+  EXPECT_EQ(facade->stats.quality.data_fit, engine->stats.quality.data_fit);
+  EXPECT_EQ(facade->stats.quality.components.size(), engine->stats.quality.components.size());
+  EXPECT_EQ(facade->stats.lower_bound_source, engine->stats.lower_bound_source);
   EXPECT_EQ(facade->planes.size(), engine->planes.size());
   // Every membership names an input segment and a returned plane, at most two per segment.
   std::vector<int> per_segment(house.scene.segments.size(), 0);

@@ -96,11 +96,12 @@ NumberSetter Integer(T linesurf::ReconstructOptions::*field) {
   };
 }
 
-template <typename T>
-NumberSetter DetectionInteger(T linesurf::DetectionParameters::*field) {
-  return [field](linesurf::ReconstructOptions& o, double v) {
+/// An integer field of a nested options struct (`detection`, `quality`).
+template <typename S, typename T>
+NumberSetter NestedInteger(S linesurf::ReconstructOptions::*nested, T S::*field) {
+  return [nested, field](linesurf::ReconstructOptions& o, double v) {
     if (!FitsInteger<T>(v)) return false;
-    o.detection.*field = static_cast<T>(v);
+    (o.*nested).*field = static_cast<T>(v);
     return true;
   };
 }
@@ -126,9 +127,15 @@ NumberSetter Flag(bool linesurf::ReconstructOptions::*field) {
 /// Every numeric field of ReconstructOptions by its C++ path.
 const std::map<std::string_view, NumberSetter>& NumberSetters() {
   using linesurf::DetectionParameters;
+  using linesurf::QualityOptions;
   using linesurf::ReconstructOptions;
   static const std::map<std::string_view, NumberSetter> setters = {
-      {"detection.epsilon", LINESURF_C_REAL(detection.epsilon)},
+      {"detection.epsilon",
+       [](ReconstructOptions& o, double v) {
+         o.detection.epsilon = v;
+         return true;
+       }},
+      {"detection.epsilon_over_noise", LINESURF_C_REAL(detection.epsilon_over_noise)},
       {"detection.relative_epsilon",
        [](ReconstructOptions& o, double v) {
          o.detection.relative_epsilon = v;
@@ -137,13 +144,17 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"detection.epsilon_fusion_factor", LINESURF_C_REAL(detection.epsilon_fusion_factor)},
       {"detection.theta_fusion_deg", LINESURF_C_REAL(detection.theta_fusion_deg)},
       {"detection.p_fusion", LINESURF_C_REAL(detection.p_fusion)},
-      {"detection.iterations", DetectionInteger(&DetectionParameters::iterations)},
-      {"detection.max_planes", DetectionInteger(&DetectionParameters::max_planes)},
-      {"detection.min_support", DetectionInteger(&DetectionParameters::min_support)},
+      {"detection.iterations",
+       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::iterations)},
+      {"detection.max_planes",
+       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::max_planes)},
+      {"detection.min_support",
+       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::min_support)},
       {"detection.collinear_tolerance", LINESURF_C_REAL(detection.collinear_tolerance)},
       {"detection.block_size", LINESURF_C_REAL(detection.block_size)},
       {"detection.block_halo", LINESURF_C_REAL(detection.block_halo)},
-      {"detection.block_max_segments", DetectionInteger(&DetectionParameters::block_max_segments)},
+      {"detection.block_max_segments",
+       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::block_max_segments)},
       {"weights.textural", LINESURF_C_REAL(weights.textural)},
       {"weights.structural", LINESURF_C_REAL(weights.structural)},
       {"weights.visibility", LINESURF_C_REAL(weights.visibility)},
@@ -160,6 +171,12 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"structural_as_textural", Flag(&ReconstructOptions::structural_as_textural)},
       {"solver.time_limit_seconds", LINESURF_C_REAL(solver.time_limit_seconds)},
       {"box_margin", LINESURF_C_REAL(box_margin)},
+      {"measure_quality", Flag(&ReconstructOptions::measure_quality)},
+      {"quality.fit_factor", LINESURF_C_REAL(quality.fit_factor)},
+      {"quality.samples_per_segment",
+       NestedInteger(&ReconstructOptions::quality, &QualityOptions::samples_per_segment)},
+      {"quality.min_lines_per_component",
+       NestedInteger(&ReconstructOptions::quality, &QualityOptions::min_lines_per_component)},
       {"triangulate", Flag(&ReconstructOptions::triangulate)},
       {"num_threads", Integer(&ReconstructOptions::num_threads)},
       {"seed", Integer(&ReconstructOptions::seed)},

@@ -19,11 +19,27 @@ Status ValidateDetection(const DetectionParameters& detection) {
   return Error{ErrorCode::kInvalidOptions, kStage, "detection: " + s.error().message};
 }
 
+/// The engine's own check of the quality fields, named as the facade's.
+Status ValidateQuality(const QualityOptions& quality) {
+  pipeline::SurfaceQualityOptions o;
+  SetEngineQuality(quality, o);
+  const Status s = o.Validate();
+  if (s) return s;
+  return Error{ErrorCode::kInvalidOptions, kStage, "quality." + s.error().message};
+}
+
 }  // namespace
+
+void SetEngineQuality(const QualityOptions& quality, pipeline::SurfaceQualityOptions& engine) {
+  engine.fit_factor = quality.fit_factor;
+  engine.samples_per_segment = quality.samples_per_segment;
+  engine.min_lines_per_component = quality.min_lines_per_component;
+}
 
 PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection, std::uint64_t seed) {
   PlaneDetectionOptions o;
   o.epsilon = detection.epsilon;
+  o.epsilon_over_noise = detection.epsilon_over_noise;
   o.relative_epsilon = detection.relative_epsilon;
   o.epsilon_fusion_factor = detection.epsilon_fusion_factor;
   o.theta_fusion_deg = detection.theta_fusion_deg;
@@ -61,6 +77,8 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.solver.time_limit_seconds = options.solver.time_limit_seconds;
   o.scene_mode = options.scene_mode;
   o.box_margin = options.box_margin;
+  o.measure_quality = options.measure_quality;
+  SetEngineQuality(options.quality, o.quality);
   o.triangulate = options.triangulate;
   o.num_threads = options.num_threads;
   o.seed = options.seed;
@@ -141,6 +159,7 @@ Status ReconstructOptions::Validate() const noexcept {
     return Bad("solver.time_limit_seconds", "must be finite and >= 0");
   }
   if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
+  if (Status s = api::ValidateQuality(quality); !s) return s;
   if (num_threads < 0) return Bad("num_threads", "must be >= 0");
   return {};
 }

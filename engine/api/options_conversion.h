@@ -16,6 +16,7 @@ namespace linesurf::api {
 [[nodiscard]] pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options);
 /// Sets the energy weights of `energy` (the other evidence options stay).
 void SetEngineWeights(const EnergyWeights& weights, pipeline::EnergyOptions& energy);
+void SetEngineQuality(const QualityOptions& quality, pipeline::SurfaceQualityOptions& engine);
 [[nodiscard]] io::SceneReadOptions ToEngineOptions(const ReadOptions& options);
 [[nodiscard]] io::MeshWriteOptions ToEngineOptions(const MeshWriteOptions& options);
 

@@ -11,11 +11,13 @@ DetectStats ToPublicStats(const PlaneDetectionStats& s, const pipeline::Sanitize
   out.segments = sane.kept_segments;
   out.lines = s.lines;
   out.epsilon = s.epsilon;
+  out.epsilon_estimate = s.epsilon_estimate;
   out.blocks = s.blocks;
   out.planes_before_fusion = s.planes_before_fusion;
   out.planes = s.planes_after_fusion;
   out.merges = s.merges;
   out.memberships_dropped = s.memberships_dropped;
+  out.capped_blocks = s.capped_blocks;
   out.segments_with_0_planes = s.num_l0;
   out.segments_with_1_plane = s.num_l1;
   out.segments_with_2_planes = s.num_l2;
@@ -39,17 +41,16 @@ ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result) {
   return out;
 }
 
-DetectResult ToPublicResult(const PlaneDetectionResult& detected,
-                            const pipeline::SanitizeResult& sane) {
+DetectResult ToPublicResult(const pipeline::DetectedScene& detected) {
   DetectResult out;
-  out.planes = ToWorldPlanes(detected.planes, sane.scene.world_from_local);
+  out.planes = ToWorldPlanes(detected.scene.planes, detected.scene.world_from_local);
   out.support.reserve(detected.support.size());
   for (const PlaneSupport& s : detected.support) {
     out.support.push_back(PlaneSupportInfo{s.inlier_count, s.inlier_length});
   }
-  out.memberships = ToMemberships(detected.memberships, sane.input_segment);
-  out.stats = ToPublicStats(detected.stats, sane.stats);
-  out.warnings = sane.warnings;
+  out.memberships = ToMemberships(detected.scene.memberships, detected.input_segment);
+  out.stats = ToPublicStats(detected.detection_stats, detected.sanitize_stats);
+  out.warnings = detected.warnings;
   return out;
 }
 

@@ -3,17 +3,15 @@
 
 #include "linesurf/result.h"
 
-#include "engine/detect/detect_planes.h"
+#include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/reconstruct.h"
-#include "engine/pipeline/sanitize_scene.h"
 
 namespace linesurf::api {
 
 [[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result);
 
-/// Planes detected on the sanitised scene of `sane`, in world coordinates; memberships index the
+/// The planes detected on the sanitised scene, in world coordinates; memberships index the
 /// input segments.
-[[nodiscard]] DetectResult ToPublicResult(const PlaneDetectionResult& detected,
-                                          const pipeline::SanitizeResult& sane);
+[[nodiscard]] DetectResult ToPublicResult(const pipeline::DetectedScene& detected);
 
 }  // namespace linesurf::api

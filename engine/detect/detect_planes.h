@@ -12,6 +12,7 @@
 #include "engine/core/scene.h"
 #include "engine/core/strong_id.h"
 #include "linesurf/error.h"
+#include "linesurf/result.h"  // EpsilonEstimate
 
 namespace linesurf {
 
@@ -115,20 +116,6 @@ struct PlaneSupport {
   std::uint32_t inlier_count = 0;
   double inlier_length = 0.0;  ///< total length of the inlier segments
   std::vector<SegmentId> inliers;  ///< ascending
-};
-
-/// Where the eps of a run came from.
-struct EpsilonEstimate {
-  double epsilon = 0.0;  ///< scene units
-  /// "given" (PlaneDetectionOptions::epsilon), "relative" (x scene diagonal), "planes" (residuals
-  /// of the scene's own planes), "probe" (residuals of probe detections) or "none" (no segment
-  /// of positive length: eps 1, nothing to detect).
-  std::string source;
-  /// Robust noise scale 1.4826 x median |endpoint-to-plane distance| (0 unless estimated).
-  double noise_scale = 0.0;
-  double initial_epsilon = 0.0;  ///< eps_0 of the probes (0 unless probed)
-  int rounds = 0;                ///< probe detections run
-  std::size_t residuals = 0;     ///< endpoint distances the scale was taken from
 };
 
 struct PlaneDetectionStats {

@@ -146,7 +146,7 @@ std::vector<std::uint32_t> LineOfSegment(const Scene& scene) {
   return line;
 }
 
-std::vector<PlaneId> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scene, double eps) {
+std::vector<std::uint32_t> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scene, double eps) {
   std::vector<bool> on(scene.planes.size(), false);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
@@ -159,9 +159,9 @@ std::vector<PlaneId> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scen
       });
     }
   }
-  std::vector<PlaneId> off;
+  std::vector<std::uint32_t> off;
   for (std::size_t p = 0; p < on.size(); ++p) {
-    if (!on[p]) off.push_back(PlaneId(p));
+    if (!on[p]) off.push_back(static_cast<std::uint32_t>(p));
   }
   return off;
 }

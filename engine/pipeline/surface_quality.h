@@ -7,6 +7,7 @@
 /// --lines` and the `reconstruct` report.
 
 #include "linesurf/error.h"
+#include "linesurf/result.h"
 
 #include "engine/core/polygon_mesh.h"
 #include "engine/core/run_context.h"
@@ -32,43 +33,9 @@ struct SurfaceQualityOptions {
   [[nodiscard]] Status Validate() const;
 };
 
-/// One connected component of the surface.
-struct ComponentQuality {
-  std::size_t faces = 0;
-  /// Signed volume (positive when outward, negative for a cavity or an interior scene's room).
-  double volume = 0.0;
-  /// Length of supported-segment samples within the fit distance whose nearest face is here.
-  double supported_length = 0.0;
-  /// Supported segments whose greater share of near samples lies on this component.
-  std::size_t supported_segments = 0;
-  /// Distinct lines among them (collinear parts of one line count once).
-  std::size_t supported_lines = 0;
-  /// Holds fewer than SurfaceQualityOptions::min_lines_per_component lines.
-  bool floating = false;
-};
-
-struct SurfaceQuality {
-  double epsilon = 0.0;                ///< eps the figures were measured with (scene units)
-  double fit_distance = 0.0;           ///< fit_factor x eps
-  std::size_t supported_segments = 0;  ///< segments on at least one plane
-  double supported_length = 0.0;       ///< their total length
-  /// Share of the supported length within fit_distance of the surface, [0, 1].
-  double data_fit = 0.0;
-  /// Share of the (supported segment, viewpoint) sight-ray length not blocked by the surface
-  /// before the segment, [0, 1]; 1 without views. A ray to a sample is blocked by a face it
-  /// crosses unless the sample lies within fit_distance of that face's plane (the face it lies
-  /// on: noise must not count as occlusion, even for grazing rays).
-  double visibility_consistency = 0.0;
-  /// The same over every segment with views (outliers included).
-  double visibility_consistency_all = 0.0;
-  /// Components, largest |volume| first (ties by first face).
-  std::vector<ComponentQuality> components;
-  double enclosed_volume = 0.0;          ///< sum of the components' |volume|
-  double largest_component_share = 0.0;  ///< |volume| of the largest / enclosed_volume
-  std::size_t floating_fragments = 0;
-  /// Planes of the scene on which no face of positive area lies (all its vertices within eps).
-  std::vector<PlaneId> planes_off_surface;
-};
+/// The figures (linesurf/result.h).
+using ComponentQuality = ::linesurf::ComponentQuality;
+using SurfaceQuality = ::linesurf::SurfaceQuality;
 
 /// @brief Measures `mesh` against `scene`'s segments, views, planes and memberships (same frame).
 /// Components are faces linked through shared vertices, vertices at the same position counting

@@ -15,8 +15,7 @@ nlohmann::json SurfaceQualityJson(const pipeline::SurfaceQuality& q) {
                           {"supported_lines", c.supported_lines},
                           {"floating", c.floating}});
   }
-  nlohmann::json off = nlohmann::json::array();
-  for (PlaneId p : q.planes_off_surface) off.push_back(p.value());
+  nlohmann::json off = q.planes_off_surface;
   return {{"epsilon", q.epsilon},
           {"fit_distance", q.fit_distance},
           {"supported_segments", q.supported_segments},

@@ -17,10 +17,16 @@ inline namespace v1 {
 
 /// RANSAC plane detection with multiple support (docs/plane_detection.md).
 struct DetectionParameters {
-  /// Inlier tolerance eps (> 0). Paper: 2 cm on metric scenes.
-  double epsilon = 0.02;
-  /// If set, eps = relative_epsilon x scene bounding-box diagonal instead of `epsilon`, for
-  /// structure-from-motion scenes in arbitrary units. Range (0, 0.5).
+  /// Inlier tolerance eps (> 0). Unset (default): estimated from the data (eps auto,
+  /// docs/plane_detection.md), so metric scenes, SfM units and noisier clouds need no value.
+  /// Paper: 2 cm on metric scenes.
+  std::optional<double> epsilon;
+  /// eps auto: eps = epsilon_over_noise x the robust noise scale of the endpoint-to-plane
+  /// residuals ((0, 20]; 2.5: the mean of two endpoint distances of a Gaussian segment stays
+  /// under 2.5 sigma with probability 99.9 %).
+  double epsilon_over_noise = 2.5;
+  /// If set, eps = relative_epsilon x scene bounding-box diagonal instead of `epsilon`. Range
+  /// (0, 0.5).
   std::optional<double> relative_epsilon;
   /// Fusion thickness as a multiple of eps (>= 1; paper: 3).
   double epsilon_fusion_factor = 3.0;
@@ -74,11 +80,13 @@ enum class SceneMode {
 
 /// LP backend of the labelling (docs/solver.md).
 enum class SolverBackend {
-  kAuto,     ///< maxflow when exact, else band / clp / pdhg by model size
-  kClp,      ///< COIN-OR Clp dual simplex: exact, the reference
-  kMaxflow,  ///< exact max-flow; refused (kInvalidOptions) on energies with higher-order terms
-  kPdhg,     ///< first-order primal-dual: approximate optimum, fast on large complexes
-  kBand,     ///< max-flow, then the LP of the cells near that surface (heuristic)
+  kAuto,        ///< maxflow when exact, else band / clp / pdhg by model size
+  kClp,         ///< COIN-OR Clp dual simplex: exact, the reference
+  kMaxflow,     ///< exact max-flow; refused (kInvalidOptions) on energies with higher-order terms
+  kPdhg,        ///< first-order primal-dual: approximate optimum, fast on large complexes
+  kBand,        ///< max-flow, then the LP of the cells near that surface (heuristic)
+  kCbc,         ///< COIN-OR Cbc on the integer program (small energies; optional at build time)
+  kClpBarrier,  ///< Clp's barrier method (for measurements only: slow)
 };
 
 /// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
@@ -107,6 +115,18 @@ struct SolverOptions {
   double time_limit_seconds = 0.0;
 };
 
+/// Options of the quality figures without ground truth (SurfaceQuality, docs/evaluation.md).
+struct QualityOptions {
+  /// A segment sample lies on the surface when within fit_factor x eps of it (> 0; 2, the width
+  /// of the inlier slab plus the surface's own tolerance).
+  double fit_factor = 2.0;
+  /// Each segment is integrated at this many midpoint samples of equal sub-segments (1..1024).
+  int samples_per_segment = 8;
+  /// A component holding fewer distinct supported lines than this is a floating fragment (>= 0;
+  /// 3, the fewest a detected plane has).
+  int min_lines_per_component = 3;
+};
+
 /// Options of Reconstruct and Reconstruction::Prepare.
 struct ReconstructOptions {
   PlaneSource planes = PlaneSource::kDetect;
@@ -125,6 +145,10 @@ struct ReconstructOptions {
   /// The box is the bounding box of segments and viewpoints grown on each side by this fraction
   /// of its extent ((0, 10]; 0.05 as the reference, so viewpoints lie in bounded cells).
   double box_margin = 0.05;
+  /// Measure the surface against the segments (ReconstructStats::quality); costs one
+  /// closest-point query per sample and one ray query per sample and view.
+  bool measure_quality = true;
+  QualityOptions quality;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
   /// Worker threads: 0 = automatic, 1 = serial (>= 0). Results do not depend on it.
@@ -186,7 +210,8 @@ struct MeshWriteOptions {
   return "";
 }
 
-/// "auto" / "clp" / "maxflow" / "pdhg" / "band" ("" for a value outside the enum).
+/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" ("" for a value outside
+/// the enum).
 [[nodiscard]] inline const char* SolverBackendName(SolverBackend backend) noexcept {
   switch (backend) {
     case SolverBackend::kAuto:
@@ -199,6 +224,10 @@ struct MeshWriteOptions {
       return "pdhg";
     case SolverBackend::kBand:
       return "band";
+    case SolverBackend::kCbc:
+      return "cbc";
+    case SolverBackend::kClpBarrier:
+      return "clp-barrier";
   }
   return "";
 }
@@ -228,7 +257,7 @@ std::optional<E> EnumFromName(std::string_view name,
 }
 [[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<SolverBackend>(name, 5, &SolverBackendName);
+  return internal::EnumFromName<SolverBackend>(name, 7, &SolverBackendName);
 }
 
 }  // namespace v1

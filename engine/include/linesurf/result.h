@@ -16,6 +16,61 @@
 namespace linesurf {
 inline namespace v1 {
 
+/// Where the inlier tolerance eps of a run came from (docs/plane_detection.md, eps auto).
+struct EpsilonEstimate {
+  double epsilon = 0.0;  ///< scene units
+  /// "given" (DetectionParameters::epsilon), "relative" (x scene diagonal), "planes" (residuals
+  /// of the scene's own planes), "probe" (residuals of probe detections) or "none" (no segment
+  /// of positive length: eps 1, nothing to detect).
+  std::string source;
+  /// Robust noise scale 1.4826 x median |endpoint-to-plane distance| (0 unless estimated).
+  double noise_scale = 0.0;
+  double initial_epsilon = 0.0;  ///< eps_0 of the probes (0 unless probed)
+  int rounds = 0;                ///< probe detections run
+  std::size_t residuals = 0;     ///< endpoint distances the scale was taken from
+};
+
+/// One connected component of a surface (SurfaceQuality).
+struct ComponentQuality {
+  std::size_t faces = 0;
+  /// Signed volume (positive when outward, negative for a cavity or an interior scene's room).
+  double volume = 0.0;
+  /// Length of supported-segment samples within the fit distance whose nearest face is here.
+  double supported_length = 0.0;
+  /// Supported segments whose greater share of near samples lies on this component.
+  std::size_t supported_segments = 0;
+  /// Distinct lines among them (collinear parts of one line count once).
+  std::size_t supported_lines = 0;
+  /// Holds fewer than QualityOptions::min_lines_per_component lines.
+  bool floating = false;
+};
+
+/// Quality of a surface without ground truth (docs/evaluation.md): fit to the segments that
+/// support a plane, sight rays not blocked, components and floating fragments.
+struct SurfaceQuality {
+  double epsilon = 0.0;                ///< eps the figures were measured with (scene units)
+  double fit_distance = 0.0;           ///< fit_factor x eps
+  std::size_t supported_segments = 0;  ///< segments on at least one plane
+  double supported_length = 0.0;       ///< their total length
+  /// Share of the supported length within fit_distance of the surface, [0, 1].
+  double data_fit = 0.0;
+  /// Share of the (supported segment, viewpoint) sight-ray length not blocked by the surface
+  /// before the segment, [0, 1]; 1 without views. A ray to a sample is blocked by a face it
+  /// crosses unless the sample lies within fit_distance of that face's plane (the face it lies
+  /// on: noise must not count as occlusion, even for grazing rays).
+  double visibility_consistency = 0.0;
+  /// The same over every segment with views (outliers included).
+  double visibility_consistency_all = 0.0;
+  /// Components, largest |volume| first (ties by first face).
+  std::vector<ComponentQuality> components;
+  double enclosed_volume = 0.0;          ///< sum of the components' |volume|
+  double largest_component_share = 0.0;  ///< |volume| of the largest / enclosed_volume
+  std::size_t floating_fragments = 0;
+  /// Planes (indices into the result's planes) on which no face of positive area lies (all its
+  /// vertices within eps), ascending.
+  std::vector<std::uint32_t> planes_off_surface;
+};
+
 /// Numbers of a reconstruction (docs/reconstruction.md explains each). The engine fills this
 /// very struct (pipeline::RunStats), so no number is lost on the way out.
 struct ReconstructStats {
@@ -30,6 +85,8 @@ struct ReconstructStats {
   std::size_t observations = 0;
   std::size_t planes = 0;
   std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes
+  /// The eps of detection (or, with given planes, of the quality figures) and how it was chosen.
+  EpsilonEstimate epsilon;
   std::array<std::size_t, 3> segments_with_planes{};  ///< on 0, 1, 2 planes
   std::size_t planes_in_complex = 0;                  ///< planes that split the box
   std::size_t cells = 0;
@@ -63,6 +120,10 @@ struct ReconstructStats {
   bool mesh_manifold = false;
   double mesh_volume = 0.0;  ///< signed; positive for an exterior solid
   std::size_t split_vertices = 0;
+  /// Figures without ground truth (valid when quality_measured; see
+  /// ReconstructOptions::measure_quality).
+  SurfaceQuality quality;
+  bool quality_measured = false;
   std::size_t peak_memory_bytes = 0;  ///< process peak RSS at the end of the run
 };
 
@@ -89,14 +150,16 @@ struct PlaneSupportInfo {
 /// Numbers of a plane detection.
 struct DetectStats {
   std::size_t input_segments = 0;
-  std::size_t segments = 0;  ///< after sanitation
-  std::int64_t lines = 0;    ///< distinct lines (collinear parts merged)
-  double epsilon = 0.0;      ///< the eps used
+  std::size_t segments = 0;          ///< after sanitation
+  std::int64_t lines = 0;            ///< distinct lines (collinear parts merged)
+  double epsilon = 0.0;              ///< the eps used
+  EpsilonEstimate epsilon_estimate;  ///< how it was chosen
   std::int64_t blocks = 0;
   std::int32_t planes_before_fusion = 0;
   std::int32_t planes = 0;
   std::int32_t merges = 0;
   std::int64_t memberships_dropped = 0;  ///< by the at-most-2 rule across blocks
+  std::int64_t capped_blocks = 0;        ///< blocks whose RANSAC stopped at max_planes
   std::int64_t segments_with_0_planes = 0;
   std::int64_t segments_with_1_plane = 0;
   std::int64_t segments_with_2_planes = 0;
