@@ -15,12 +15,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace linesurf {
@@ -376,21 +379,26 @@ TEST(FacadeDetect, HousePlanesIndexInputSegments) {
   }
 }
 
-/// Redirects fds 1 and 2 to files while alive; Captured() restores them and returns both.
+/// Redirects file descriptors 1 and 2 to files while alive (so writes of any thread through
+/// stdio, iostreams or write(2) are caught); Captured() restores them and returns both.
 class CaptureStdio {
  public:
   explicit CaptureStdio(const std::filesystem::path& dir)
       : out_path_(dir / "stdout.txt"), err_path_(dir / "stderr.txt") {
     std::fflush(stdout);
     std::fflush(stderr);
+    std::cout.flush();
+    std::cerr.flush();
     saved_out_ = dup(1);
     saved_err_ = dup(2);
-    EXPECT_NE(std::freopen(out_path_.c_str(), "w", stdout), nullptr);
-    EXPECT_NE(std::freopen(err_path_.c_str(), "w", stderr), nullptr);
+    Redirect(out_path_, 1);
+    Redirect(err_path_, 2);
   }
   std::string Captured() {
     std::fflush(stdout);
     std::fflush(stderr);
+    std::cout.flush();
+    std::cerr.flush();
     dup2(saved_out_, 1);
     dup2(saved_err_, 2);
     close(saved_out_);
@@ -399,24 +407,56 @@ class CaptureStdio {
   }
 
  private:
+  static void Redirect(const std::filesystem::path& path, int fd) {
+    const int file = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(file, 0) << path;
+    ASSERT_GE(dup2(file, fd), 0) << path;
+    close(file);
+  }
+
   std::filesystem::path out_path_, err_path_;
   int saved_out_ = -1;
   int saved_err_ = -1;
 };
 
+/// The capture itself catches what a library could print: stdio, iostreams, raw write(2).
+TEST(FacadeReconstruct, CaptureStdioCatchesEveryWayOfPrinting) {
+  CaptureStdio capture(testing::FreshTempDir());
+  std::fputs("a", stdout);
+  std::cerr << "b";
+  ASSERT_EQ(write(2, "c", 1), 1);
+  std::thread([] { std::printf("d"); }).join();
+  EXPECT_EQ(capture.Captured(), "adbc");
+}
+
+/// A full library session prints nothing: read, reconstruct (with progress and logging
+/// callbacks unset and set), detect, prepare and re-solve, a failing call, write.
 TEST(FacadeReconstruct, WritesNothingToStdoutOrStderr) {
-  const ReadSceneResult house = ReadHouse();
+  const std::filesystem::path dir = testing::FreshTempDir();
   ReconstructOptions options = HouseOptions();
   int progress_calls = 0;
   RunControl control;
   control.on_progress = [&progress_calls](const Progress&) { ++progress_calls; };
-  CaptureStdio capture(testing::FreshTempDir());
-  const auto r = Reconstruct(house.scene.View(), options, control);
-  auto d = DetectPlanes(house.scene.View(), DetectOptions{});
-  auto bad = Reconstruct(InputScene{}, options);
+  CaptureStdio capture(dir);
+  const auto house = ReadScene(testing::ExampleHouseInput().string());
+  const auto silent = Reconstruct(house->scene.View(), options);
+  const auto r = Reconstruct(house->scene.View(), options, control);
+  const auto d = DetectPlanes(house->scene.View(), DetectOptions{});
+  const auto prepared = Reconstruction::Prepare(house->scene.View(), options);
+  EnergyWeights weights = options.weights;
+  weights.visibility = 0.5;
+  Expected<ReconstructResult> solved = Error{ErrorCode::kInternal, "test", "not prepared"};
+  if (prepared) solved = prepared->Solve(weights);
+  const auto bad = Reconstruct(InputScene{}, options);
+  const Status written = r ? WriteMesh((dir / "house.ply").string(), r->mesh) : Status{};
   const std::string printed = capture.Captured();
+  ASSERT_TRUE(house.has_value()) << house.error().ToString();
+  ASSERT_TRUE(silent.has_value()) << silent.error().ToString();
   ASSERT_TRUE(r.has_value()) << r.error().ToString();
   ASSERT_TRUE(d.has_value()) << d.error().ToString();
+  ASSERT_TRUE(prepared.has_value()) << prepared.error().ToString();
+  ASSERT_TRUE(solved.has_value()) << solved.error().ToString();
+  ASSERT_TRUE(written.has_value()) << written.error().ToString();
   EXPECT_FALSE(bad.has_value());
   EXPECT_GT(progress_calls, 0);
   EXPECT_EQ(printed, "") << "the library printed";
@@ -456,34 +496,55 @@ TEST(FacadeReconstruct, ThrowingProgressCallbackCancels) {
   EXPECT_EQ(r.error().code, ErrorCode::kCancelled) << r.error().ToString();
 }
 
-/// Cancel requested from the progress callback in the middle of the cell complex of Andalusian
-/// (148 given planes, ~3e5 cells): the call returns kCancelled. The time from the request to
-/// the return is printed (the 1 s goal is measured, not asserted: see docs/user/embedding.md).
-TEST(FacadeReconstruct, CancelFromProgressOnAndalusian) {
+/// CPU seconds used by the whole process so far (every thread): unlike wall time, it does not
+/// grow while other processes hold the cores.
+double ProcessCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Cancel requested from the progress callback during the cell complex of Andalusian (148
+/// given planes, ~3e5 cells), early and late (a late plane insertion took over 1 s before the
+/// complex polled inside insertions): the call returns kCancelled within 1 s of the request
+/// (must-show 2 of issue 13). Asserted on the process's CPU time from the request to the
+/// return, which a loaded machine does not inflate; the wall time is printed beside it.
+TEST(FacadeReconstruct, CancelFromProgressOnAndalusianReturnsWithinOneSecond) {
   LINESURF_REQUIRE_ANDALUSIAN(input);
   const auto read = ReadScene(input.string());
   ASSERT_TRUE(read.has_value()) << read.error().ToString();
   ReconstructOptions options;
   options.planes = PlaneSource::kGiven;
-  std::atomic<bool> cancel{false};
-  std::chrono::steady_clock::time_point requested;
-  std::string cancelled_in;
-  RunControl control;
-  control.on_progress = [&](const Progress& p) {
-    if (!cancel && p.stage == "cell_complex" && p.stage_fraction >= 0.3) {
-      cancelled_in = p.stage;
-      requested = std::chrono::steady_clock::now();
-      cancel = true;
-    }
-  };
-  control.is_cancelled = [&] { return cancel.load(); };
-  const auto r = Reconstruct(read->scene.View(), options, control);
-  const double latency =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - requested).count();
-  ASSERT_TRUE(cancel.load()) << "the run never reached 30 % of the complex";
-  ASSERT_FALSE(r.has_value());
-  EXPECT_EQ(r.error().code, ErrorCode::kCancelled) << r.error().ToString();
-  std::printf("cancel requested in %s, returned after %.3f s\n", cancelled_in.c_str(), latency);
+  for (const double at : {0.3, 0.9}) {
+    std::atomic<bool> cancel{false};
+    std::chrono::steady_clock::time_point requested;
+    double requested_cpu = 0.0;
+    RunControl control;
+    control.on_progress = [&](const Progress& p) {
+      if (!cancel && p.stage == "cell_complex" && p.stage_fraction >= at) {
+        requested = std::chrono::steady_clock::now();
+        requested_cpu = ProcessCpuSeconds();
+        cancel = true;
+      }
+    };
+    control.is_cancelled = [&] { return cancel.load(); };
+    const auto r = Reconstruct(read->scene.View(), options, control);
+    const double cpu = ProcessCpuSeconds() - requested_cpu;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - requested).count();
+    ASSERT_TRUE(cancel.load()) << "the run never reached " << at << " of the complex";
+    ASSERT_FALSE(r.has_value()) << "the run finished although cancelled at " << at;
+    EXPECT_EQ(r.error().code, ErrorCode::kCancelled) << r.error().ToString();
+    std::printf(
+        "cancel requested at %.0f %% of cell_complex: returned after %.3f s wall, %.3f s "
+        "CPU\n",
+        100 * at,
+        wall,
+        cpu);
+    EXPECT_LT(cpu, 1.0) << "Reconstruct used " << cpu << " s of CPU (" << wall
+                        << " s wall) after the cancel request at " << at
+                        << " of the cell complex (goal: return within 1 s)";
+  }
 }
 
 }  // namespace
