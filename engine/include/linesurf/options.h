@@ -96,12 +96,15 @@ struct EnergyWeights {
   double textural = 1.0;
   /// Structural primitive term (>= 0; paper: 1, the reference's -cp).
   double structural = 1.0;
-  /// Visibility lambda_vis (>= 0; paper: 0.1; the reference's Andalusian demo used 1).
-  double visibility = 0.1;
-  /// Edge regularisation lambda_edge per length / sigma (>= 0; paper: 0.01).
-  double edge = 0.01;
-  /// Corner regularisation lambda_corner per corner (>= 0; paper: 0.01).
-  double corner = 0.01;
+  /// Visibility lambda_vis (>= 0; 1, the reference's Andalusian demo; paper: 0.1, which leaves
+  /// slabs and fragments on Andalusian: docs/results.md).
+  double visibility = 1.0;
+  /// Edge regularisation lambda_edge per length / sigma (>= 0; 0.1, the Andalusian demo; paper:
+  /// 0.01).
+  double edge = 0.1;
+  /// Corner regularisation lambda_corner per corner (>= 0; 0.1, the Andalusian demo; paper:
+  /// 0.01).
+  double corner = 0.1;
   /// Surface area per area / sigma^2 (>= 0; default 0: lines are too sparse for it).
   double area = 0.0;
   /// Viewpoint prior per observation when the viewpoint's cell is full (>= 0; reference: 1).
