@@ -12,4 +12,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libsuitesparse-dev coinor-libclp-dev coinor-libcbc-dev nlohmann-json3-dev libcli11-dev \
   libgmp-dev libmpfr-dev libgtest-dev libbenchmark-dev \
   libpng-dev libmaxflow-dev \
-  clang-14 libfuzzer-14-dev libclang-rt-14-dev
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev \
+  python3-dev python3-numpy pybind11-dev

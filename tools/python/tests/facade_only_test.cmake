@@ -1,0 +1,16 @@
+# The Python module includes the facade (linesurf/...), pybind11, the standard library and its
+# own headers only: no engine/, partition/ or solver/ header. Run by CTest with -DDIR=tools/python.
+file(GLOB sources ${DIR}/*.h ${DIR}/*.cpp)
+if(NOT sources)
+  message(FATAL_ERROR "no sources in ${DIR}")
+endif()
+foreach(source ${sources})
+  file(STRINGS ${source} includes REGEX "^#include")
+  foreach(line ${includes})
+    if(NOT line MATCHES "^#include (<[a-z_/0-9]+(\\.h)?>|\"linesurf/[a-z_]+\\.h\"|\"tools/python/[a-z_]+\\.h\")$")
+      message(FATAL_ERROR "${source} includes a header outside the facade: ${line}")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH sources count)
+message(STATUS "${count} files include the facade only")

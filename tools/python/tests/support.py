@@ -1,0 +1,26 @@
+"""Shared paths and scenes of the Python tests."""
+
+import os
+import subprocess
+import unittest
+
+SOURCE_DIR = os.environ.get("LINESURF_SOURCE_DIR",
+                            os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+HOUSE = os.path.join(SOURCE_DIR, "docs", "examples", "house", "lines.json")
+CLI = os.environ.get("LINESURF_CLI", "")
+SHARED_DIR = os.environ.get("LINESURF_SHARED_DIR", "")
+
+
+def require_cli(test):
+    if not CLI or not os.path.exists(CLI):
+        raise unittest.SkipTest("LINESURF_CLI is not set: the CLI is not built")
+    del test
+
+
+def run_cli(*args):
+    """Runs `linesurf ARGS` and fails with its stderr when it exits non-zero."""
+    done = subprocess.run([CLI, *args], capture_output=True, text=True, check=False)
+    if done.returncode != 0:
+        raise AssertionError(f"linesurf {' '.join(args)} exited {done.returncode}: "
+                             f"{done.stderr}")
+    return done
