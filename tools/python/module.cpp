@@ -180,6 +180,7 @@ std::optional<SceneFormat> SceneFormatFromName(const std::string& name) {
   if (name == "json") return SceneFormat::kReferenceJson;
   if (name == "line3dpp") return SceneFormat::kLine3dpp;
   if (name == "obj") return SceneFormat::kObjLines;
+  if (name == "limap") return SceneFormat::kLimapTracks;
   return std::nullopt;
 }
 
@@ -190,7 +191,8 @@ py::dict ReadSceneArrays(const std::string& path,
   ReadOptions options;
   const std::optional<SceneFormat> parsed = SceneFormatFromName(format);
   if (!parsed) {
-    throw py::value_error("format: unknown value '" + format + "' (auto, json, line3dpp or obj)");
+    throw py::value_error("format: unknown value '" + format +
+                          "' (auto, json, line3dpp, limap or obj)");
   }
   options.format = *parsed;
   options.nvm = nvm;

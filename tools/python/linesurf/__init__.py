@@ -143,8 +143,9 @@ def detect_planes(segments, viewpoints=None, observations=None, *, progress=None
 
 
 def read_scene(path, *, nvm=None, colmap=None, format="auto"):
-    """Reads a scene file: reference JSON, Line3D++ .txt (with nvm= or colmap=) or OBJ lines.
-    format: "auto" (by extension), "json", "line3dpp" or "obj". Returns a Scene."""
+    """Reads a scene file: reference JSON, Line3D++ .txt or LIMAP alltracks.txt (with nvm= or
+    colmap=) or OBJ lines. format: "auto" (by extension and first line), "json", "line3dpp",
+    "limap" or "obj". Returns a Scene."""
     return Scene(**_linesurf.read_scene(str(path), nvm or "", colmap or "", format))
 
 
