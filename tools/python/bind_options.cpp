@@ -77,7 +77,8 @@ void AddValidate(py::class_<T>& c) {
 void BindOptions(py::module_& m) {
   using D = DetectionParameters;
   OptionsClass<D>(m, "DetectionParameters", "RANSAC plane detection (docs/plane_detection.md).")
-      .Field("epsilon", &D::epsilon, "inlier tolerance eps (> 0), scene units")
+      .Field("epsilon", &D::epsilon, "inlier tolerance eps (> 0), scene units; None = auto")
+      .Field("epsilon_over_noise", &D::epsilon_over_noise, "eps auto: eps / noise scale (0, 20]")
       .Field("relative_epsilon", &D::relative_epsilon, "eps as a fraction of the bbox diagonal")
       .Field("epsilon_fusion_factor", &D::epsilon_fusion_factor, "fusion thickness / eps (>= 1)")
       .Field("theta_fusion_deg", &D::theta_fusion_deg, "fusion angle, degrees (0, 90)")
@@ -108,8 +109,15 @@ void BindOptions(py::module_& m) {
                  &S::backend,
                  &SolverBackendName,
                  &SolverBackendFromName,
-                 "'auto', 'clp', 'maxflow', 'pdhg' or 'band'")
+                 "'auto', 'clp', 'maxflow', 'pdhg', 'band', 'cbc' or 'clp-barrier'")
       .Field("time_limit_seconds", &S::time_limit_seconds, "solve wall-time limit (0 = none)")
+      .Finish();
+
+  using Q = QualityOptions;
+  OptionsClass<Q>(m, "QualityOptions", "Figures without ground truth (docs/evaluation.md).")
+      .Field("fit_factor", &Q::fit_factor, "a sample fits within fit_factor x eps (> 0)")
+      .Field("samples_per_segment", &Q::samples_per_segment, "samples per segment [1, 1024]")
+      .Field("min_lines_per_component", &Q::min_lines_per_component, "floating below (>= 0)")
       .Finish();
 
   using R = ReconstructOptions;
@@ -132,6 +140,8 @@ void BindOptions(py::module_& m) {
           .Field("structural_as_textural", &R::structural_as_textural, "ablation")
           .Field("solver", &R::solver, "SolverOptions")
           .Field("box_margin", &R::box_margin, "box growth, fraction of its extent (0, 10]")
+          .Field("measure_quality", &R::measure_quality, "quality figures in the report")
+          .Field("quality", &R::quality, "QualityOptions")
           .Field("triangulate", &R::triangulate, "triangulate the output faces")
           .Field("num_threads", &R::num_threads, "worker threads (0 = automatic)")
           .Field("seed", &R::seed, "seed of every random stream")

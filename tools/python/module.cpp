@@ -43,6 +43,47 @@ py::dict MeshToDict(const Mesh& mesh) {
 
 #define LINESURF_REPORT(field) report[#field] = stats.field
 
+py::dict ReportOf(const EpsilonEstimate& stats) {
+  py::dict report;
+  LINESURF_REPORT(epsilon);
+  LINESURF_REPORT(source);
+  LINESURF_REPORT(noise_scale);
+  LINESURF_REPORT(initial_epsilon);
+  LINESURF_REPORT(rounds);
+  LINESURF_REPORT(residuals);
+  return report;
+}
+
+py::dict ReportOf(const ComponentQuality& stats) {
+  py::dict report;
+  LINESURF_REPORT(faces);
+  LINESURF_REPORT(volume);
+  LINESURF_REPORT(supported_length);
+  LINESURF_REPORT(supported_segments);
+  LINESURF_REPORT(supported_lines);
+  LINESURF_REPORT(floating);
+  return report;
+}
+
+py::dict ReportOf(const SurfaceQuality& stats) {
+  py::dict report;
+  LINESURF_REPORT(epsilon);
+  LINESURF_REPORT(fit_distance);
+  LINESURF_REPORT(supported_segments);
+  LINESURF_REPORT(supported_length);
+  LINESURF_REPORT(data_fit);
+  LINESURF_REPORT(visibility_consistency);
+  LINESURF_REPORT(visibility_consistency_all);
+  py::list components;
+  for (const ComponentQuality& c : stats.components) components.append(ReportOf(c));
+  report["components"] = components;
+  LINESURF_REPORT(enclosed_volume);
+  LINESURF_REPORT(largest_component_share);
+  LINESURF_REPORT(floating_fragments);
+  LINESURF_REPORT(planes_off_surface);
+  return report;
+}
+
 py::dict ReportOf(const ReconstructStats& stats) {
   py::dict report;
   py::list stages;
@@ -55,6 +96,8 @@ py::dict ReportOf(const ReconstructStats& stats) {
   LINESURF_REPORT(viewpoints);
   LINESURF_REPORT(observations);
   LINESURF_REPORT(planes);
+  LINESURF_REPORT(capped_blocks);
+  report["epsilon"] = ReportOf(stats.epsilon);
   report["segments_with_planes"] = py::make_tuple(
       stats.segments_with_planes[0], stats.segments_with_planes[1], stats.segments_with_planes[2]);
   LINESURF_REPORT(planes_in_complex);
@@ -76,6 +119,10 @@ py::dict ReportOf(const ReconstructStats& stats) {
   LINESURF_REPORT(solver_status);
   LINESURF_REPORT(objective);
   LINESURF_REPORT(relaxed_objective);
+  LINESURF_REPORT(rounded_objective);
+  LINESURF_REPORT(lower_bound);
+  LINESURF_REPORT(lower_bound_source);
+  LINESURF_REPORT(labeling_method);
   LINESURF_REPORT(fractional_cells);
   LINESURF_REPORT(full_cells);
   LINESURF_REPORT(mesh_vertices);
@@ -84,6 +131,7 @@ py::dict ReportOf(const ReconstructStats& stats) {
   LINESURF_REPORT(mesh_manifold);
   LINESURF_REPORT(mesh_volume);
   LINESURF_REPORT(split_vertices);
+  if (stats.quality_measured) report["quality"] = ReportOf(stats.quality);
   LINESURF_REPORT(peak_memory_bytes);
   return report;
 }
@@ -94,11 +142,13 @@ py::dict ReportOf(const DetectStats& stats) {
   LINESURF_REPORT(segments);
   LINESURF_REPORT(lines);
   LINESURF_REPORT(epsilon);
+  report["epsilon_estimate"] = ReportOf(stats.epsilon_estimate);
   LINESURF_REPORT(blocks);
   LINESURF_REPORT(planes_before_fusion);
   LINESURF_REPORT(planes);
   LINESURF_REPORT(merges);
   LINESURF_REPORT(memberships_dropped);
+  LINESURF_REPORT(capped_blocks);
   LINESURF_REPORT(segments_with_0_planes);
   LINESURF_REPORT(segments_with_1_plane);
   LINESURF_REPORT(segments_with_2_planes);

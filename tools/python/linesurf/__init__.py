@@ -8,7 +8,7 @@ viewpoints (Langlois, Boulch & Marlet, 3DV 2019), through the linesurf library's
 
 Arrays in: segments (n, 2, 3) or (n, 6) float, viewpoints (m, 3) float, observations (k, 2)
 integer (segment index, viewpoint index). Options are keyword arguments named as the fields of
-the C++ ReconstructOptions / DetectOptions; groups (detection, weights, solver) take a dict.
+the C++ ReconstructOptions / DetectOptions; groups (detection, weights, solver, quality) take a dict.
 Failures raise linesurf.Error subclasses (InvalidInput, InvalidOptions, Cancelled, ...); Ctrl-C
 cancels a run and raises KeyboardInterrupt. docs/user/embedding.md has the whole guide.
 """
@@ -16,8 +16,8 @@ cancels a run and raises KeyboardInterrupt. docs/user/embedding.md has the whole
 from . import _linesurf
 from ._errors import (Cancelled, Degenerate, Error, Internal, InvalidInput, InvalidOptions,
                       ResourceExhausted, SolverFailed)
-from ._linesurf import (DetectionParameters, DetectOptions, EnergyWeights, ReconstructOptions,
-                        SolverOptions)
+from ._linesurf import (DetectionParameters, DetectOptions, EnergyWeights, QualityOptions,
+                        ReconstructOptions, SolverOptions)
 from ._types import DetectResult, Mesh, ReconstructResult, Scene
 
 __version__ = _linesurf.__version__
@@ -25,7 +25,7 @@ __version__ = _linesurf.__version__
 __all__ = [
     "Cancelled", "Degenerate", "DetectOptions", "DetectResult", "DetectionParameters",
     "EnergyWeights", "Error", "Internal", "InvalidInput", "InvalidOptions", "Mesh",
-    "ReconstructOptions", "ReconstructResult", "Reconstruction", "ResourceExhausted", "Scene", "SolverFailed",
+    "QualityOptions", "ReconstructOptions", "ReconstructResult", "Reconstruction", "ResourceExhausted", "Scene", "SolverFailed",
     "SolverOptions", "detect_planes", "read_scene", "reconstruct", "write_mesh",
 ]
 

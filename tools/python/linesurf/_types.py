@@ -48,7 +48,8 @@ class ReconstructResult:
 
     planes: (p, 2, 3) float64, planes[i, 0] a point, planes[i, 1] the unit normal.
     memberships: (q, 2) uint32 (input segment, plane), sorted by segment then plane.
-    report: the run's numbers (stage times, counts, LP size, solver status, mesh checks).
+    report: the run's numbers (stage times, counts, eps and its source, LP size, solver status,
+        energies and lower bound, mesh checks, quality figures unless measure_quality=False).
     """
 
     mesh: Mesh

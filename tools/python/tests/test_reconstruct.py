@@ -1,5 +1,6 @@
 """reconstruct() on the bundled house gives the CLI's mesh bytes; results and options."""
 
+import json
 import os
 import tempfile
 import unittest
@@ -34,6 +35,23 @@ class ReconstructHouse(unittest.TestCase):
             linesurf.write_mesh(py_mesh, self.result.mesh)
             with open(cli_mesh, "rb") as a, open(py_mesh, "rb") as b:
                 self.assertEqual(a.read(), b.read())
+
+    def test_report_has_the_clis_eps_quality_and_bound(self):
+        support.require_cli(self)
+        with tempfile.TemporaryDirectory() as tmp:
+            report_path = os.path.join(tmp, "report.json")
+            support.run_cli("reconstruct", support.HOUSE, "--scene", "exterior", "-o",
+                            os.path.join(tmp, "cli.ply"), "--report", report_path)
+            with open(report_path, encoding="utf-8") as f:
+                cli = json.load(f)
+        report = self.result.report
+        self.assertEqual(report["epsilon"]["source"], cli["epsilon"]["source"])
+        self.assertEqual(report["epsilon"]["epsilon"], cli["epsilon"]["epsilon"])
+        self.assertEqual(report["quality"]["data_fit"], cli["quality"]["data_fit"])
+        self.assertEqual(len(report["quality"]["components"]), cli["quality"]["num_components"])
+        self.assertEqual(report["labeling_method"], cli["solver"]["method"])
+        self.assertEqual(report["lower_bound_source"], cli["solver"]["lower_bound_source"])
+        self.assertEqual(report["capped_blocks"], cli["counts"]["capped_blocks"])
 
     def test_mesh_arrays_are_consistent_with_the_report(self):
         mesh, report = self.result.mesh, self.result.report
