@@ -108,12 +108,13 @@ class ReconstructHouse(unittest.TestCase):
         same = prepared.solve()
         np.testing.assert_array_equal(same.mesh.vertices, self.result.mesh.vertices)
         np.testing.assert_array_equal(same.mesh.face_indices, self.result.mesh.face_indices)
-        other = prepared.solve(visibility=1.0, edge=0.1)
+        other = prepared.solve(visibility=0.5, edge=0.05)
         fresh = linesurf.reconstruct(self.scene, scene_mode="exterior",
-                                     weights={"visibility": 1.0, "edge": 0.1})
+                                     weights={"visibility": 0.5, "edge": 0.05})
         np.testing.assert_array_equal(other.mesh.vertices, fresh.mesh.vertices)
         np.testing.assert_array_equal(other.mesh.face_indices, fresh.mesh.face_indices)
-        self.assertEqual(prepared.options.weights.visibility, 0.1)
+        self.assertEqual(prepared.options.weights.visibility,
+                         linesurf.ReconstructOptions().weights.visibility)
         with self.assertRaisesRegex(TypeError, r"unknown option 'weights.sigma'"):
             prepared.solve(sigma=1.0)
 
@@ -124,6 +125,8 @@ class ReconstructHouse(unittest.TestCase):
         self.assertEqual(d.report["planes"], len(d.planes))
 
     def test_progress_is_monotonic_per_stage(self):
+        # A stage may run again from 0 (eps auto's probe detections run detect_planes before
+        # the detection itself), but never goes backwards within one run.
         calls = []
         linesurf.reconstruct(self.scene, scene_mode="exterior",
                              progress=lambda stage, f: calls.append((stage, f)))
@@ -136,7 +139,8 @@ class ReconstructHouse(unittest.TestCase):
                 self.assertNotIn(stage, [s for s, _ in stages], f"stage {stage} came back")
                 stages.append([stage, fraction])
             else:
-                self.assertGreaterEqual(fraction, stages[-1][1], f"{stage} went backwards")
+                if fraction != 0.0:
+                    self.assertGreaterEqual(fraction, stages[-1][1], f"{stage} went backwards")
                 stages[-1][1] = fraction
         self.assertGreaterEqual(len(stages), 3, f"stages reported: {stages}")
 
