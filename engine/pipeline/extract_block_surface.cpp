@@ -3,6 +3,7 @@
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
+#include "engine/pipeline/merge_coplanar_faces.h"
 #include "engine/pipeline/surface_assembly.h"
 #include "partition/arrangement/vertex_key_geometry.h"
 
@@ -51,6 +52,7 @@ struct RawCorner {
 
 struct RawFace {
   BlockFacetRef ref;
+  PlaneKey plane;              ///< the plane the face lies on
   Vec3 normal = Vec3::Zero();  ///< outward (exact: a plane normal, maybe negated)
   std::uint32_t begin = 0;     ///< corners [begin, end) of the block part, oriented
   std::uint32_t end = 0;
@@ -118,6 +120,7 @@ class Collector {
       const auto edges = c.facet_edges[f];
       const std::size_t plane = c.facet_plane[f].index();
       RawFace face{{false, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(fi)},
+                   block.plane_keys[plane],
                    (pos_full ? -1.0 : 1.0) * c.planes[c.facet_plane[f]].coefficients.head<3>(),
                    static_cast<std::uint32_t>(part.corners.size()),
                    0};
@@ -156,6 +159,7 @@ class Collector {
         normal[seam.axis] = lower_full ? 1.0 : -1.0;
         RawFace face{
             {true, first_seam + static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(i)},
+            key,
             normal,
             static_cast<std::uint32_t>(part.corners.size()),
             0};
@@ -364,11 +368,12 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
 /// than two faces to `crowded`; returns the number of such edges and of all edges.
 std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
                                                 const MergedVertices& mv,
-                                                const std::vector<Vec3>& face_normals,
+                                                const std::vector<const RawFace*>& faces,
                                                 std::vector<LineCorner>& line_corners,
                                                 std::uint32_t first_edge_id,
                                                 SurfaceCycles& s,
-                                                std::vector<EdgePair>& crowded) {
+                                                std::vector<EdgePair>& crowded,
+                                                std::vector<FlatJoin>* joins) {
   std::sort(line_corners.begin(), line_corners.end(), [](const LineCorner& a, const LineCorner& b) {
     return std::tie(a.lo, a.hi, a.corner) < std::tie(b.lo, b.hi, b.corner);
   });
@@ -394,13 +399,20 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
           kInternal,
           kStage,
           "the two faces on an edge are not oriented alike");
-      s.partner[line_corners[i].corner] = line_corners[i + 1].face;
-      s.partner[line_corners[i + 1].corner] = line_corners[i].face;
+      const std::uint32_t a = line_corners[i].face;
+      const std::uint32_t b = line_corners[i + 1].face;
+      s.partner[line_corners[i].corner] = b;
+      s.partner[line_corners[i + 1].corner] = a;
+      // A flat continuation of one plane across an edge on a block face.
+      if (joins != nullptr && faces[a]->plane == faces[b]->plane &&
+          faces[a]->normal == faces[b]->normal) {
+        joins->push_back({edge, a, b});
+      }
     } else {
       ++non_manifold;
       around.clear();
       for (std::size_t k = i; k < j; ++k) {
-        around.push_back({face_normals[line_corners[k].face], direction(k)});
+        around.push_back({faces[line_corners[k].face]->normal, direction(k)});
       }
       const LineCorner& first = line_corners[i];
       const KeySegment segment{mv.keys[first.lo], mv.keys[first.hi], first.p, first.q};
@@ -439,6 +451,10 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
                                                  const RunContext& ctx) noexcept {
   return CatchAll(kStage, [&]() -> BlockExtractResult {
     const std::vector<std::size_t> cell_offsets = partition::GlobalCellOffsets(cx);
+    LINESURF_THROW_IF(options.merge_coplanar && options.triangulate,
+                      kInvalidOptions,
+                      kStage,
+                      "merge_coplanar gives non-convex faces: not with triangulate");
     LINESURF_THROW_IF(
         labels.size() != cell_offsets.back(),
         kInvalidInput,
@@ -511,7 +527,6 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
 
     SurfaceCycles s;
     std::vector<LineCorner> line_corners;
-    std::vector<Vec3> face_normals;
     for (std::size_t f = 0; f < faces.size(); ++f) {
       const SubdividedFace& sub = subdivided[f];
       const std::size_t n = sub.vertices.size();
@@ -533,7 +548,6 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
         }
       }
       s.offsets.push_back(static_cast<std::uint32_t>(s.corner_vertex.size()));
-      face_normals.push_back(faces[f]->normal);
     }
     subdivided.clear();
 
@@ -564,17 +578,37 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
       crowded.insert(crowded.end(), block_crowded[b].begin(), block_crowded[b].end());
       result.stats.non_manifold_edges += block_non_manifold[b];
     }
+    std::vector<FlatJoin> joins;
     const auto [non_manifold, on_faces_edges] =
-        PairOnFaces(cx, mv, face_normals, line_corners, edge_offset.back(), s, crowded);
+        PairOnFaces(cx,
+                    mv,
+                    faces,
+                    line_corners,
+                    edge_offset.back(),
+                    s,
+                    crowded,
+                    options.merge_coplanar ? &joins : nullptr);
     result.stats.non_manifold_edges += non_manifold;
     result.stitch.edges_on_block_faces = on_faces_edges;
 
+    // Faces of the cycles -> the first facet each stands for.
+    std::vector<std::uint32_t> first_face(s.NumFaces());
+    for (std::uint32_t f = 0; f < first_face.size(); ++f) first_face[f] = f;
+    if (options.merge_coplanar) {
+      MergedCycles merged = MergeAcrossJoins(s, joins, crowded, mv.points.size());
+      s = std::move(merged.cycles);
+      crowded = std::move(merged.crowded);
+      first_face = std::move(merged.first_face);
+      result.stitch.merged_faces = merged.merged_faces;
+    }
     AssembledSurface surface = AssembleSurface(s, mv.points, crowded, options.triangulate);
     result.mesh = std::move(surface.mesh);
     result.stats.surface_facets = faces.size();
     result.stats.split_vertices = surface.split_vertices;
     result.face_facet.reserve(surface.face_cycle.size());
-    for (const std::uint32_t f : surface.face_cycle) result.face_facet.push_back(faces[f]->ref);
+    for (const std::uint32_t f : surface.face_cycle) {
+      result.face_facet.push_back(faces[first_face[f]]->ref);
+    }
     result.vertex_key.reserve(surface.vertex_source.size());
     for (const std::uint32_t v : surface.vertex_source) {
       result.vertex_key.push_back(v == kNoIndex ? std::nullopt

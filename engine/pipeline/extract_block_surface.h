@@ -32,7 +32,7 @@
 namespace linesurf::pipeline {
 
 /// The facet an output face comes from: facet `facet` of block `owner`, or seam facet `facet` of
-/// BlockComplexes::seams[owner].
+/// BlockComplexes::seams[owner] (the first of the merged facets with merge_coplanar).
 struct BlockFacetRef {
   bool seam = false;
   std::uint32_t owner = 0;
@@ -45,6 +45,7 @@ struct StitchStats {
   std::size_t merged_vertex_keys = 0;    ///< distinct triples merged into another triple's vertex
   std::size_t inserted_vertices = 0;     ///< vertices inserted into edges (T-junctions removed)
   std::size_t edges_on_block_faces = 0;  ///< surface edges paired across blocks and seams
+  std::size_t merged_faces = 0;  ///< faces merged into larger ones (ExtractOptions::merge_coplanar)
 };
 
 struct BlockExtractResult {
@@ -60,7 +61,8 @@ struct BlockExtractResult {
 
 /// @brief Extracts the surface between full (label 1) and empty (label 0) cells of all blocks.
 /// @param labels one label per global cell (partition::GlobalCellOffsets).
-/// @return kInvalidInput when `labels` has the wrong size; kInternal on broken complexes.
+/// @return kInvalidInput when `labels` has the wrong size; kInvalidOptions for merge_coplanar
+/// with triangulate; kInternal on broken complexes.
 /// Deterministic for any ctx.num_threads: faces in block order (each block's facets in FacetId
 /// order, then the seam facets of the faces it is the lower block of), vertices in order of
 /// their first (block, vertex) occurrence. With one block the mesh is ExtractSurface's.

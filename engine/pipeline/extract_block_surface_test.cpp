@@ -451,6 +451,47 @@ TEST(ExtractBlockSurface, RandomDegenerateConfigurations) {
   }
 }
 
+// merge_coplanar: the walls of a box building cut by block faces become one face per wall; random
+// configurations stay valid; one block has no seam to merge across.
+TEST(ExtractBlockSurface, MergeCoplanarJoinsFacetsOfOnePlaneAcrossBlockFaces) {
+  ExtractOptions merge;
+  merge.merge_coplanar = true;
+  const std::vector<Box3> building = {Box3(Vec3(1, 1, 0.5), Vec3(3, 2.5, 2))};
+  const Box3 box(Vec3(0, 0, 0), Vec3(4, 3.5, 3.5));
+  for (const double size : {0.5, 1.0, 1.5}) {
+    const BlockComplexes cx = Build(box, size, BoxPlanes(building));
+    double volume = 0.0;
+    const std::vector<std::uint8_t> labels = LabelCells(
+        cx, [&](const Vec3& p) { return InsideBoxes(building, p); }, volume);
+    const BlockExtractResult split = Stitch(cx, labels);
+    const BlockExtractResult merged = Stitch(cx, labels, merge);
+    EXPECT_GT(split.mesh.NumFaces(), 6u);
+    EXPECT_EQ(merged.mesh.NumFaces(), 6u);
+    EXPECT_EQ(merged.stitch.merged_faces, split.mesh.NumFaces());
+    ExpectValidSurface(merged.mesh, volume);
+  }
+  std::size_t merged_faces = 0;
+  for (std::uint64_t seed = 0; seed < 40; ++seed) {
+    SCOPED_TRACE(seed);
+    RandomCase c = MakeRandomCase(seed);
+    c.options.triangulate = false;
+    c.options.merge_coplanar = true;
+    const BlockExtractResult r = Stitch(c.cx, c.labels, c.options);
+    merged_faces += r.stitch.merged_faces;
+    if (!c.options.outside_full) ExpectValidSurface(r.mesh, c.volume);
+  }
+  EXPECT_GT(merged_faces, 0u);
+  const Box3 one(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const BlockComplexes single = Build(one, 10.0, RandomPlanes(8, one, 5));
+  double volume = 0.0;
+  const std::vector<std::uint8_t> labels = RandomLabels(single, 5, volume);
+  ExpectSameMesh(Stitch(single, labels, merge).mesh, Stitch(single, labels).mesh);
+  merge.triangulate = true;
+  const auto refused = ExtractBlockSurface(single, labels, merge, RunContext{});
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.error().code, ErrorCode::kInvalidOptions);
+}
+
 TEST(ExtractBlockSurface, SameMeshForAnyThreadCount) {
   const testing::RealThreadCounts real;
   const Box3 box(Vec3(-1, -1, -1), Vec3(1, 1, 1));

@@ -1,8 +1,9 @@
 // The stitch on the synthetic families (issue 10, must-show 2, without the solver): block
 // partitions of synth house, lshape, room, floor, city-4 and city-16 with their true planes, cells
-// labelled full when their centroid lies inside the ground truth, stitched into one mesh that
-// `linesurf evaluate`'s checks find closed, 2-manifold, oriented and not self-intersecting, with
-// no vertex inside another face's edge and the volume of the full cells.
+// labelled full when their centroid lies inside the ground truth, stitched into one mesh (block
+// facets, and coplanar faces merged) that `linesurf evaluate`'s checks find closed, 2-manifold,
+// oriented and not self-intersecting, with no vertex inside another face's edge and the volume of
+// the full cells.
 
 #include "engine/pipeline/block_partition.h"
 #include "engine/pipeline/extract_block_surface.h"
@@ -67,18 +68,28 @@ TEST_P(BlockStitch, GroundTruthLabelsGiveAClosedConformingManifold) {
         volume += inside[c] ? volumes[c] : 0.0;
       }
       ASSERT_GT(volume, 0.0);
-      const Expected<pipeline::BlockExtractResult> r =
-          pipeline::ExtractBlockSurface(p->complexes, labels, {}, RunContext{});
-      ASSERT_TRUE(r) << r.error().ToString();
-      const Expected<MeshTopology> t = CheckMeshTopology(r->mesh);
-      ASSERT_TRUE(t) << t.error().ToString();
-      EXPECT_TRUE(t->closed);
-      EXPECT_TRUE(t->two_manifold);
-      EXPECT_TRUE(t->oriented);
-      EXPECT_FALSE(t->self_intersecting);
-      EXPECT_NEAR(t->signed_volume, volume, 1e-9 * volume);
-      EXPECT_EQ(testing::CountTJunctions(r->mesh), 0u);
-      seam_edges += r->stitch.edges_on_block_faces;
+      std::size_t faces = 0;
+      for (const bool merge : {false, true}) {
+        SCOPED_TRACE(merge ? "merged" : "block facets");
+        pipeline::ExtractOptions extract;
+        extract.merge_coplanar = merge;
+        const Expected<pipeline::BlockExtractResult> r =
+            pipeline::ExtractBlockSurface(p->complexes, labels, extract, RunContext{});
+        ASSERT_TRUE(r) << r.error().ToString();
+        const Expected<MeshTopology> t = CheckMeshTopology(r->mesh);
+        ASSERT_TRUE(t) << t.error().ToString();
+        EXPECT_TRUE(t->closed);
+        EXPECT_TRUE(t->two_manifold);
+        EXPECT_TRUE(t->oriented);
+        EXPECT_FALSE(t->self_intersecting);
+        EXPECT_NEAR(t->signed_volume, volume, 1e-9 * volume);
+        EXPECT_EQ(testing::CountTJunctions(r->mesh), 0u);
+        if (merge) {
+          EXPECT_LE(r->mesh.NumFaces(), faces);
+        }
+        faces = r->mesh.NumFaces();
+        seam_edges += r->stitch.edges_on_block_faces;
+      }
     }
   }
   EXPECT_GT(seam_edges, 0u) << "the surface crossed no block face";
