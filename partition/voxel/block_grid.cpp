@@ -90,7 +90,11 @@ Expected<BlockGrid> BlockGrid::CreateWholeBlocks(const Vec3& origin,
 }
 
 double BlockGrid::Face(int axis, std::int32_t level, std::int64_t index) const {
-  if (level == 0) return faces_[axis][static_cast<std::size_t>(index)];
+  if (level == 0) {
+    // A key outside the grid would read past the face table (ASan found one in a test).
+    LINESURF_ASSERT(index >= 0 && index <= dims_[axis]);
+    return faces_[axis][static_cast<std::size_t>(index)];
+  }
   if (index % 2 == 0) return Face(axis, level - 1, index / 2);
   return 0.5 * (Face(axis, level - 1, index / 2) + Face(axis, level - 1, index / 2 + 1));
 }
