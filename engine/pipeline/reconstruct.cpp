@@ -6,8 +6,10 @@
 
 #include "engine/core/exception.h"
 #include "engine/detect/estimate_epsilon.h"
+#include "engine/pipeline/block_evidence.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
+#include "engine/pipeline/extract_block_surface.h"
 #include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
@@ -76,6 +78,7 @@ Status ReconstructOptions::Validate() const {
   if (Status s = energy.Validate(); !s) return s;
   if (Status s = solver.Validate(); !s) return s;
   if (Status s = complex.Validate(); !s) return s;
+  if (Status s = blocks.Validate(); !s) return s;
   if (Status s = quality.Validate(); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
@@ -137,12 +140,39 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
 
     timer.Start("complex");
     const Box3 box = SceneBox(scene, options.box_margin);
-    partition::CellComplexResult built =
-        Take(partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
-    prepared.warnings.insert(prepared.warnings.end(), built.warnings.begin(),
-                             built.warnings.end());
-    stats.planes_in_complex = built.stats.planes_used;
-    prepared.complex = std::move(built.complex);
+    if (options.engine == Engine::kBlocks) {
+      BlockPartitionOptions partition_options = options.blocks;
+      partition_options.complex = options.complex;
+      partition_options.block_size = options.planes.block_size;
+      prepared.blocks = Take(BuildBlockPartition(scene, box, partition_options, stage_ctx));
+      const partition::BlockComplexes& bc = prepared.blocks->complexes;
+      prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
+      stats.planes_in_complex = scene.planes.size() - prepared.blocks->stats.planes_without_inliers;
+      stats.engine = "blocks";
+      stats.block_size = prepared.blocks->stats.block_size;
+      stats.blocks = bc.blocks.size();
+      stats.seam_facets = bc.stats.seam_facets;
+      for (const partition::BlockComplex& b : bc.blocks) {
+        stats.cells += b.complex.NumCells();
+        stats.facets += b.complex.NumFacets();
+        stats.edges += b.complex.NumEdges();
+        stats.vertices += b.complex.NumVertices();
+      }
+    } else {
+      partition::CellComplexResult built =
+          Take(partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
+      prepared.warnings.insert(prepared.warnings.end(), built.warnings.begin(),
+                               built.warnings.end());
+      stats.planes_in_complex = built.stats.planes_used;
+      prepared.complex = std::move(built.complex);
+      const CellComplex& cx = prepared.complex;
+      stats.engine = "monolithic";
+      stats.blocks = 1;
+      stats.cells = cx.NumCells();
+      stats.facets = cx.NumFacets();
+      stats.edges = cx.NumEdges();
+      stats.vertices = cx.NumVertices();
+    }
     timer.Stop();
 
     // Decided in every mode: a given mode that contradicts the evidence is warned about.
@@ -153,20 +183,15 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     if (facts.auto_mode) stats.scene_mode_reason = facts.decision.reason;
     stats.scene_mode = facts.interior ? "interior" : "exterior";
 
-    const CellComplex& cx = prepared.complex;
     facts.planes = scene.planes.size();
-    facts.planes_in_complex = built.stats.planes_used;
-    facts.cells = cx.NumCells();
+    facts.planes_in_complex = stats.planes_in_complex;
+    facts.cells = stats.cells;
     facts.scene_diagonal = box.Extent().norm();
     stats.stage_seconds = timer.Stages();
     stats.segments = scene.NumSegments();
     stats.viewpoints = scene.viewpoints.size();
     stats.observations = scene.observations.NumItems();
     stats.planes = scene.planes.size();
-    stats.cells = cx.NumCells();
-    stats.facets = cx.NumFacets();
-    stats.edges = cx.NumEdges();
-    stats.vertices = cx.NumVertices();
     prepared.scene = std::move(scene);
     return prepared;
   });
@@ -180,7 +205,6 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     RunContext stage_ctx;
     ConfigureStageContext(options, ctx, stage_ctx);
     const Scene& scene = prepared.scene;
-    const CellComplex& cx = prepared.complex;
     const bool interior = prepared.facts.interior;
 
     ReconstructResult result;
@@ -192,10 +216,12 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     StageTimer timer;
 
     timer.Start("evidence");
+    const BoundaryMode boundary = interior ? BoundaryMode::kInterior : BoundaryMode::kExterior;
     EvidenceResult evidence =
-        Take(ComputeEvidence(cx, scene, options.energy,
-                             interior ? BoundaryMode::kInterior : BoundaryMode::kExterior,
-                             stage_ctx));
+        prepared.blocks ? Take(ComputeBlockEvidence(prepared.blocks->complexes, scene,
+                                                    options.energy, boundary, stage_ctx))
+                        : Take(ComputeEvidence(prepared.complex, scene, options.energy, boundary,
+                                               stage_ctx));
     result.warnings.insert(result.warnings.end(), evidence.warnings.begin(),
                            evidence.warnings.end());
 
@@ -207,8 +233,16 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     ExtractOptions extract;
     extract.outside_full = interior;
     extract.triangulate = options.triangulate;
-    ExtractResult surface = Take(ExtractSurface(cx, labeling.labels, extract));
-    result.mesh = std::move(surface.mesh);
+    if (prepared.blocks) {
+      BlockExtractResult surface =
+          Take(ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));
+      result.mesh = std::move(surface.mesh);
+      stats.split_vertices = surface.stats.split_vertices;
+    } else {
+      ExtractResult surface = Take(ExtractSurface(prepared.complex, labeling.labels, extract));
+      result.mesh = std::move(surface.mesh);
+      stats.split_vertices = surface.stats.split_vertices;
+    }
     const IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 
@@ -274,7 +308,6 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     stats.mesh_closed = topology.closed;
     stats.mesh_manifold = topology.manifold;
     stats.mesh_volume = topology.signed_volume;
-    stats.split_vertices = surface.stats.split_vertices;
     stats.peak_memory_bytes = PeakRssBytes();
     return result;
   });

@@ -15,6 +15,7 @@
 #include "engine/core/run_context.h"
 #include "engine/core/scene.h"
 #include "engine/detect/detect_planes.h"
+#include "engine/pipeline/block_partition.h"
 #include "engine/pipeline/compute_evidence.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/sanitize_scene.h"
@@ -25,10 +26,19 @@
 #include "partition/arrangement/build_cell_complex.h"
 #include "solver/lp/lp_backend.h"
 
+#include <optional>
+
 namespace linesurf::pipeline {
 
 /// Boundary condition of the scene (see DecideSceneMode for kAuto): the public enum.
 using SceneMode = ::linesurf::SceneMode;
+
+/// How the cell complex is built: one exact arrangement of every plane in the scene box, or the
+/// block engine (docs/design/block_engine.md).
+enum class Engine {
+  kMonolithic,
+  kBlocks,
+};
 
 struct ReconstructOptions {
   SanitizeOptions sanitize;
@@ -40,6 +50,12 @@ struct ReconstructOptions {
   EnergyOptions energy;
   solver::LabelingOptions solver;
   partition::CellComplexOptions complex;
+  /// The complex: monolithic (default) or blocks.
+  Engine engine = Engine::kMonolithic;
+  /// Size rule and support margin of the block engine. Its block size is replaced by
+  /// planes.block_size (one block side for detection and partition; 0 = the size rule) and its
+  /// `complex` by `complex` above.
+  BlockPartitionOptions blocks;
   SceneMode scene_mode = SceneMode::kAuto;
   /// The box is the bounding box of the segments and viewpoints grown on each side by this
   /// fraction of its extent along that axis (at least this fraction of its diagonal). Range
@@ -84,7 +100,10 @@ struct PreparedReconstruction {
   Scene scene;
   /// Per segment of `scene`, its id in the input scene.
   IdVector<SegmentId, SegmentId> input_segment;
+  /// The cell complex of the box (monolithic engine; empty with the blocks engine).
   CellComplex complex;
+  /// The block partition (blocks engine only).
+  std::optional<BlockPartition> blocks;
   /// What the result checks (JudgeResult) need from the preparation; `interior` is the
   /// resolved boundary condition.
   ResultFacts facts;

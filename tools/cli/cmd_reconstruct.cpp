@@ -192,6 +192,12 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
             "Ablation: structural segments count as two textural ones");
   r.Add("solver", o.solver.backend, "Labelling backend: clp, maxflow, pdhg, band, cbc or auto");
   r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
+  r.AddChoice("engine", o.engine,
+              {{"monolithic", pipeline::Engine::kMonolithic}, {"blocks", pipeline::Engine::kBlocks}},
+              "Cell complex: one arrangement of the scene box, or per-block arrangements "
+              "(blocks of --block-size, automatic when 0)");
+  r.Add("block-margin", o.blocks.support.margin_blocks,
+        "Blocks a plane's support region is dilated by (--engine blocks)");
   r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
   r.Add("seed", o.seed, "Random seed");
   r.AddFlag("ascii", args->ascii, "ASCII PLY");

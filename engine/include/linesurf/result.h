@@ -89,6 +89,10 @@ struct ReconstructStats {
   EpsilonEstimate epsilon;
   std::array<std::size_t, 3> segments_with_planes{};  ///< on 0, 1, 2 planes
   std::size_t planes_in_complex = 0;                  ///< planes that split the box
+  std::string engine;           ///< the cell complex: "monolithic" or "blocks"
+  double block_size = 0.0;      ///< base block side (blocks engine; 0 for monolithic)
+  std::size_t blocks = 0;       ///< base blocks (1 for monolithic)
+  std::size_t seam_facets = 0;  ///< facets of the seam overlay (blocks engine)
   std::size_t cells = 0;
   std::size_t facets = 0;
   std::size_t edges = 0;
