@@ -54,6 +54,8 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
                  {"segments_with_1_plane", s.segments_with_planes[1]},
                  {"segments_with_2_planes", s.segments_with_planes[2]},
                  {"planes_in_complex", s.planes_in_complex},
+                 {"blocks", s.blocks},
+                 {"seam_facets", s.seam_facets},
                  {"cells", s.cells},
                  {"facets", s.facets},
                  {"edges", s.edges},
@@ -66,6 +68,8 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
                  {"lp_variables", s.lp_variables},
                  {"lp_constraints", s.lp_constraints},
                  {"lp_nonzeros", s.lp_nonzeros}};
+  j["engine"] = s.engine;
+  j["block_size"] = s.block_size;
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;
   j["sigma"] = s.sigma;
