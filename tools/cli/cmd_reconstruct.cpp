@@ -7,6 +7,7 @@
 #include "engine/pipeline/reconstruct.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
+#include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 #include "tools/cli/surface_quality_json.h"
@@ -201,7 +202,8 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
               "Cell complex: one arrangement of the scene box, or per-block arrangements "
               "(blocks of --block-size, automatic when 0)");
   r.Add("block-margin", o.blocks.support.margin_blocks,
-        "Blocks a plane's support region is dilated by (--engine blocks)");
+        "Blocks a plane's support region is dilated by (--engine blocks)")
+      ->check(Between(0.0, 64.0));
   r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
   r.Add("seed", o.seed, "Random seed");
   r.AddFlag("ascii", args->ascii, "ASCII PLY");
