@@ -2,6 +2,8 @@
 // One hostile case of the robustness suite: inputs it generates, the command it runs, and the
 // contract the run must keep (docs/user/errors.md).
 
+#include "linesurf/error.h"
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -30,6 +32,8 @@ struct HostileCase {
 /// Counts one case of `kind` whose contract is `exit_code` (for the library API: the exit code
 /// the CLI gives its ErrorCode) in the table printed at the end of the run.
 void RecordVerdict(const std::string& kind, int exit_code);
+/// The exit code the CLI gives `code` (tools/cli/cli_support.cpp), for the table of verdicts.
+int ExitCodeOf(ErrorCode code);
 
 /// Helpers the generators share.
 void WriteFile(const std::filesystem::path& path, const std::string& content);

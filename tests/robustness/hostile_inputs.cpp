@@ -10,6 +10,24 @@
 
 namespace linesurf::robustness {
 
+int ExitCodeOf(ErrorCode code) {
+  switch (code) {
+    case ErrorCode::kInvalidOptions:
+      return 2;
+    case ErrorCode::kInvalidInput:
+      return 3;
+    case ErrorCode::kDegenerate:
+    case ErrorCode::kSolverFailed:
+    case ErrorCode::kResourceExhausted:
+      return 4;
+    case ErrorCode::kCancelled:
+      return 5;
+    case ErrorCode::kInternal:
+      break;
+  }
+  return 70;
+}
+
 void WriteFile(const std::filesystem::path& path, const std::string& content) {
   std::ofstream(path, std::ios::binary) << content;
 }

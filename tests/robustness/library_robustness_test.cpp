@@ -53,20 +53,6 @@ pipeline::ReconstructOptions Exterior() {
   return o;
 }
 
-/// The exit code the CLI gives `code` (tools/cli/cli_support.cpp), for the table of verdicts.
-int ExitCodeOf(ErrorCode code) {
-  switch (code) {
-    case ErrorCode::kInvalidOptions:
-      return 2;
-    case ErrorCode::kInvalidInput:
-      return 3;
-    case ErrorCode::kDegenerate:
-      return 4;
-    default:
-      return 70;
-  }
-}
-
 constexpr const char* kKind = "library API";
 
 struct ApiCase {
