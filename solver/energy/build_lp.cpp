@@ -134,16 +134,23 @@ double ReducedEnergy::Evaluate(std::span<const double> x) const {
   return e;
 }
 
+LpShape ShapeOfLp(const ReducedEnergy& r) {
+  LpShape shape;
+  shape.columns = r.NumFree() + r.pairs.size() + r.structural_weights.size() +
+                  r.parity_weights.size();
+  shape.rows = 2 * r.pairs.size() + r.structural_weights.size() + 2 * r.parity_weights.size();
+  shape.nonzeros = 6 * r.pairs.size() + r.structural_columns.size() + r.structural_weights.size() +
+                   2 * (r.parity_columns.size() + r.parity_weights.size());
+  return shape;
+}
+
 LpModel BuildLpModel(const ReducedEnergy& r) {
   LpModel lp;
   lp.objective_offset = r.constant;
-  const std::size_t num_cols = r.NumFree() + r.pairs.size() + r.structural_weights.size() +
-                               r.parity_weights.size();
-  const std::size_t num_rows =
-      2 * r.pairs.size() + r.structural_weights.size() + 2 * r.parity_weights.size();
-  const std::size_t num_nz = 6 * r.pairs.size() + r.structural_columns.size() +
-                             r.structural_weights.size() +
-                             2 * (r.parity_columns.size() + r.parity_weights.size());
+  const LpShape shape = ShapeOfLp(r);
+  const std::size_t num_cols = shape.columns;
+  const std::size_t num_rows = shape.rows;
+  const std::size_t num_nz = shape.nonzeros;
   LINESURF_THROW_IF(num_nz >= 0xFFFFFFFFu || num_cols >= kNoColumn, kResourceExhausted,
                     "build_lp", "LP too large for 32-bit indices: " << num_nz << " nonzeros");
   lp.objective.reserve(num_cols);

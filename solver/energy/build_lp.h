@@ -78,6 +78,14 @@ struct ReducedEnergy {
 /// Step 2 (see the file comment).
 [[nodiscard]] LpModel BuildLpModel(const ReducedEnergy& reduced);
 
+/// The size of BuildLpModel(reduced), without building it.
+struct LpShape {
+  std::size_t columns = 0;
+  std::size_t rows = 0;
+  std::size_t nonzeros = 0;
+};
+[[nodiscard]] LpShape ShapeOfLp(const ReducedEnergy& reduced);
+
 /// Full labelling (one value per cell) from free-column values: fixed cells at their label.
 [[nodiscard]] std::vector<double> ExpandToCells(const EnergyInput& energy,
                                                 const ReducedEnergy& reduced,

@@ -1,7 +1,8 @@
 #pragma once
 /// @file sub_energy.h
 /// @brief The energy of a subset of cells with every other cell held at a given label: what an
-/// exact solve of a window (window_polish.h) or of one block of a larger scene works on.
+/// exact solve of a window (window_polish.h) or of one block of a larger scene works on; and the
+/// interior energy of a subset, the piece of a Lagrangian split of the energy by blocks.
 ///
 /// The sub-energy's cells are the chosen cells first (in the order given, free unless fixed in
 /// the full energy), then every other cell that shares a term with them, fixed at its label.
@@ -31,5 +32,16 @@ struct SubEnergy {
                                        const TermIncidence& incidence,
                                        std::span<const CellId> chosen,
                                        const std::vector<std::uint8_t>& labels);
+
+/// The interior energy of the chosen cells (all free in `energy`, distinct): their unary costs
+/// and the terms that touch a chosen cell and no free cell outside them; the other cells of
+/// those terms are fixed cells of `energy`, kept fixed. Terms that reach a free cell outside the
+/// chosen ones are left out. For a partition of the free cells into blocks every term with a free
+/// cell lies in exactly one interior energy or is left out by all; since every term is >= 0, the
+/// sum over blocks of the interiors' minima, plus the energy of the terms and cells without a free
+/// cell, is a lower bound of the minimum of `energy` (a Lagrangian split with zero multipliers).
+[[nodiscard]] SubEnergy InteriorEnergy(const EnergyInput& energy,
+                                       const TermIncidence& incidence,
+                                       std::span<const CellId> chosen);
 
 }  // namespace linesurf::solver

@@ -1,6 +1,7 @@
 #include "solver/lp/band_fixing.h"
 
 #include "solver/energy/build_lp.h"
+#include "solver/energy/term_incidence.h"
 #include "solver/lp/backends/maxflow/maxflow_backend.h"
 
 namespace linesurf::solver {
@@ -17,6 +18,17 @@ std::vector<std::uint8_t> PairwiseLabels(const EnergyInput& energy, const RunCon
   std::vector<std::uint8_t> labels(values.size());
   for (std::size_t c = 0; c < values.size(); ++c) labels[c] = values[c] > 0.5 ? 1 : 0;
   return labels;
+}
+
+double HigherOrderEnergy(const EnergyInput& energy, const std::vector<std::uint8_t>& labels) {
+  double total = 0.0;
+  for (std::size_t g = 0; g < energy.NumStructuralGroups(); ++g) {
+    total += TermEnergy(energy, {TermKind::kStructural, static_cast<std::uint32_t>(g)}, labels);
+  }
+  for (std::size_t g = 0; g < energy.NumParityGroups(); ++g) {
+    total += TermEnergy(energy, {TermKind::kParity, static_cast<std::uint32_t>(g)}, labels);
+  }
+  return total;
 }
 
 EnergyInput FixCellsOutsideBand(const EnergyInput& energy,

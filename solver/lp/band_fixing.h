@@ -21,6 +21,12 @@ namespace linesurf::solver {
 [[nodiscard]] std::vector<std::uint8_t> PairwiseLabels(const EnergyInput& energy,
                                                        const RunContext& ctx);
 
+/// The structural and parity energy of 0/1 `labels` (the terms PairwiseLabels leaves out).
+/// When it is 0 for PairwiseLabels' labels, those labels are an integral optimum of `energy`
+/// (its other terms are >= 0).
+[[nodiscard]] double HigherOrderEnergy(const EnergyInput& energy,
+                                       const std::vector<std::uint8_t>& labels);
+
 /// A copy of `energy` in which every free cell outside the band is fixed at `labels`. The band:
 /// cells of pair terms and parity groups whose cells have different labels (cells touching the
 /// surface of `labels`), cells of structural groups that `labels` leaves all empty, then

@@ -1,5 +1,6 @@
 #include "solver/lp/lp_backend.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -7,6 +8,7 @@
 #include "engine/core/exception.h"
 #include "solver/energy/build_lp.h"
 #include "solver/lp/band_fixing.h"
+#include "solver/lp/block_labeling.h"
 #include "solver/lp/dual_bound.h"
 #include "solver/lp/group_moves.h"
 #include "solver/lp/backends/cbc/cbc_backend.h"
@@ -26,28 +28,26 @@ Error InvalidOption(const std::string& message) {
 }
 
 std::string ResolveBackend(const std::string& requested, const ReducedEnergy& reduced,
-                           std::size_t lp_columns, const LabelingOptions& options) {
+                           std::size_t lp_columns, const LabelingOptions& options,
+                           std::size_t num_blocks) {
   if (requested != "auto") return requested;
   if (!reduced.HasHigherOrderTerms()) return "maxflow";
+  if (num_blocks > 1 && lp_columns > options.auto_blocks_min_columns) return "blocks";
   if (lp_columns > options.auto_band_min_columns) return "band";
   return lp_columns <= options.auto_clp_max_columns ? "clp" : "pdhg";
 }
 
-LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
-                     const RunContext& ctx);
+LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> block_of_cell,
+                     const LabelingOptions& options, const RunContext& ctx);
 
-// Structural and parity energy of 0/1 labels (the terms max-flow leaves out).
-double HigherOrderEnergy(const EnergyInput& energy, const std::vector<std::uint8_t>& labels) {
-  EnergyInput higher;
-  higher.ResizeCells(energy.NumCells());
-  higher.structural_offsets = energy.structural_offsets;
-  higher.structural_cells = energy.structural_cells;
-  higher.structural_weights = energy.structural_weights;
-  higher.parity_offsets = energy.parity_offsets;
-  higher.parity_cells = energy.parity_cells;
-  higher.parity_signs = energy.parity_signs;
-  higher.parity_weights = energy.parity_weights;
-  return higher.Evaluate(std::span<const std::uint8_t>(labels));
+// Blocks holding a free cell.
+std::size_t CountBlocks(const EnergyInput& energy, std::span<const std::uint32_t> block_of_cell) {
+  std::vector<std::uint32_t> used;
+  for (std::size_t c = 0; c < block_of_cell.size(); ++c) {
+    if (energy.fixed[CellId(c)] == CellFix::kFree) used.push_back(block_of_cell[c]);
+  }
+  std::sort(used.begin(), used.end());
+  return static_cast<std::size_t>(std::unique(used.begin(), used.end()) - used.begin());
 }
 
 // What the backend proves about the integral optimum.
@@ -113,7 +113,7 @@ LabelingResult SolveInBand(const EnergyInput& energy, const LabelingOptions& opt
   inner.auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   inner.local_search_passes = inner.group_move_passes = 0;
   inner.window_cells = 0;
-  LabelingResult result = Solve(banded, inner, ctx);
+  LabelingResult result = Solve(banded, {}, inner, ctx);
   // The moves and windows work on the whole energy: they may change cells outside the band.
   Improve(energy, options, ctx, result);
   result.backend = "band+" + result.backend;
@@ -132,18 +132,31 @@ LabelingResult SolveInBand(const EnergyInput& energy, const LabelingOptions& opt
   return result;
 }
 
-LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
-                     const RunContext& ctx) {
+LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> block_of_cell,
+                     const LabelingOptions& options, const RunContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   const ReducedEnergy reduced = ReduceEnergy(energy);
-  const LpModel lp = BuildLpModel(reduced);
+  const LpShape shape = ShapeOfLp(reduced);
   LabelingResult result;
-  result.lp_columns = lp.NumColumns();
-  result.lp_rows = lp.NumRows();
-  result.lp_nonzeros = lp.NumNonzeros();
-  result.backend = ResolveBackend(options.backend, reduced, lp.NumColumns(), options);
+  result.lp_columns = shape.columns;
+  result.lp_rows = shape.rows;
+  result.lp_nonzeros = shape.nonzeros;
+  result.backend = ResolveBackend(options.backend, reduced, shape.columns, options,
+                                  block_of_cell.empty() ? 0 : CountBlocks(energy, block_of_cell));
   ctx.ThrowIfCancelled(kStage);
   if (result.backend == "band") return SolveInBand(energy, options, ctx, result);
+  if (result.backend == "blocks") {
+    LINESURF_THROW_IF(block_of_cell.empty(), kInvalidOptions, kStage,
+                      "backend 'blocks' needs a partition of the cells into blocks");
+    LabelingResult blocks = SolveInBlocks(energy, block_of_cell, options, ctx);
+    blocks.lp_columns = shape.columns;
+    blocks.lp_rows = shape.rows;
+    blocks.lp_nonzeros = shape.nonzeros;
+    blocks.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return blocks;
+  }
+  const LpModel lp = BuildLpModel(reduced);
 
   LpSolution solution;
   if (result.backend == "clp") {
@@ -199,13 +212,21 @@ LabelingResult Solve(const EnergyInput& energy, const LabelingOptions& options,
 
 Status LabelingOptions::Validate() const {
   if (backend != "auto" && backend != "clp" && backend != "clp-barrier" && backend != "maxflow" &&
-      backend != "pdhg" && backend != "band" && backend != "cbc") {
+      backend != "pdhg" && backend != "band" && backend != "blocks" && backend != "cbc") {
     return InvalidOption("backend: '" + backend +
-                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band, cbc");
+                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band, blocks, cbc");
   }
-  if (backend == "cbc" && !CbcAvailable()) {
+  if (block_backend != "auto" && block_backend != "clp" && block_backend != "pdhg" &&
+      block_backend != "cbc") {
+    return InvalidOption("block_backend: '" + block_backend +
+                         "' is not one of auto, clp, pdhg, cbc");
+  }
+  if ((backend == "cbc" || block_backend == "cbc") && !CbcAvailable()) {
     return InvalidOption("backend: 'cbc' is not in this build (install coinor-libcbc-dev and "
                          "reconfigure)");
+  }
+  if (block_sweeps < 0 || block_sweeps > 100) {
+    return InvalidOption("block_sweeps: must be in [0, 100]");
   }
   if (band_rings < 0 || band_rings > 16) return InvalidOption("band_rings: must be in [0, 16]");
   if (!(clp_tolerance > 0.0 && clp_tolerance <= 1e-2)) {
@@ -231,9 +252,21 @@ Status LabelingOptions::Validate() const {
 
 Expected<LabelingResult> SolveLabeling(const EnergyInput& energy, const LabelingOptions& options,
                                        const RunContext& ctx) noexcept {
+  return SolveLabeling(energy, {}, options, ctx);
+}
+
+Expected<LabelingResult> SolveLabeling(const EnergyInput& energy,
+                                       std::span<const std::uint32_t> block_of_cell,
+                                       const LabelingOptions& options,
+                                       const RunContext& ctx) noexcept {
   if (Status s = options.Validate(); !s) return s.error();
   if (Status s = energy.Validate(); !s) return s.error();
-  return CatchAll(kStage, [&] { return Solve(energy, options, ctx); });
+  if (!block_of_cell.empty() && block_of_cell.size() != energy.NumCells()) {
+    return Error{ErrorCode::kInvalidInput, kStage,
+                 "block of cell: " + std::to_string(block_of_cell.size()) + " entries for " +
+                     std::to_string(energy.NumCells()) + " cells"};
+  }
+  return CatchAll(kStage, [&] { return Solve(energy, block_of_cell, options, ctx); });
 }
 
 }  // namespace linesurf::solver

@@ -16,10 +16,17 @@
 ///               terms, then the LP ("auto" among clp/pdhg) of the cells near that surface only,
 ///               every other cell fixed at its max-flow label. A heuristic: not the full LP's
 ///               optimum in general.
-///  - "auto":    "maxflow" when it is exact, else "clp" up to auto_clp_max_columns LP columns,
-///               else "pdhg" (see docs/design/lp_backend.md for the measurements). "band" only
-///               above auto_band_min_columns, which is off by default: band changes the result
-///               (measured on an Andalusian crop, docs/results.md "Integral labelling").
+///  - "auto":    "maxflow" when it is exact, else "blocks" above auto_blocks_min_columns LP
+///               columns when a partition of more than one block is given, else "clp" up to
+///               auto_clp_max_columns LP columns, else "pdhg" (see docs/design/lp_backend.md for
+///               the measurements). "band" only above auto_band_min_columns, which is off by
+///               default: band changes the result (measured on an Andalusian crop,
+///               docs/results.md "Integral labelling").
+///  - "blocks":  per-block solve for large complexes (block_labeling.h), given a partition of
+///               the cells into blocks: each block's interior energy solved by
+///               LabelingOptions::block_backend, in parallel, then alternating seam fixing by
+///               colour; the bound is the sum of the blocks' interior bounds (a Lagrangian split).
+///               Needs the partition (the SolveLabeling overload that takes one).
 ///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
 ///  - "cbc":     COIN-OR Cbc branch and cut on the integer program itself (cells 0/1): the
 ///               integral optimum when it proves one (status "optimal"), else the best labelling
@@ -37,6 +44,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -51,7 +59,7 @@ inline constexpr double kTieTolerance = 1e-7;
 
 struct LabelingOptions {
   /// "auto" (default: picks per model size, see above), "clp", "clp-barrier", "maxflow",
-  /// "pdhg", "band" or "cbc".
+  /// "pdhg", "band", "blocks" or "cbc".
   std::string backend = "auto";
   /// Primal/dual feasibility tolerance of the simplex (Clp's primal and dual tolerances); range
   /// (0, 1e-2]. Clp's default.
@@ -70,6 +78,15 @@ struct LabelingOptions {
   /// pdhg in 26 min) but changes the result: on a 47-plane Andalusian crop its labels' energy is
   /// 1 % above the full LP's with 36 % fewer full cells (docs/results.md, "Integral labelling").
   std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
+  /// "auto" uses the per-block solve above this many LP columns, when a partition of the cells
+  /// into more than one block is given; >= 0. See docs/design/lp_backend.md, "Per-block solve".
+  std::size_t auto_blocks_min_columns = 200000;
+  /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg by the block's
+  /// size), "clp", "pdhg" or "cbc".
+  std::string block_backend = "auto";
+  /// Coordination sweeps of "blocks" (each re-solves, colour by colour, the blocks whose
+  /// neighbours changed); [0, 100]. 0 = the interior solves and the final moves only.
+  int block_sweeps = 2;
   /// Growth steps of the band through shared parity groups (edges and vertices); [0, 16].
   int band_rings = 1;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
@@ -110,7 +127,8 @@ struct LabelingResult {
   /// The best proven lower bound on the integral optimum of the energy (so labels_objective -
   /// lower_bound bounds how far the labels are from optimal); -infinity when none is known.
   double lower_bound = -std::numeric_limits<double>::infinity();
-  /// Where lower_bound comes from: "lp optimum" (clp), "lp dual bound" (pdhg: the Lagrangian
+  /// Where lower_bound comes from: "block split: ..." (blocks: the sum of the blocks'
+  /// interior bounds, with how each was proven), "lp optimum" (clp), "lp dual bound" (pdhg: the Lagrangian
   /// bound of its dual point, dual_bound.h; its relaxed_objective is a primal value, not a
   /// bound), "integer optimum" (cbc proved it, maxflow, or one exact window held every free
   /// cell), "branch and bound" (cbc stopped early), "pairwise optimum" (band: the max-flow
@@ -118,6 +136,18 @@ struct LabelingResult {
   std::string lower_bound_source = "none";
   /// LP columns of the band's own LP ("band" backend only; 0 otherwise).
   std::size_t band_lp_columns = 0;
+  /// "blocks" only (0 otherwise): blocks with free cells, colours, terms whose free cells lie in
+  /// more than one block, block solves (interior and coordination), those decided by the
+  /// pairwise certificate (no LP), coordination solves that lowered the energy, coordination
+  /// sweeps run, and the LP columns of the largest block LP.
+  std::size_t blocks = 0;
+  std::size_t block_colours = 0;
+  std::size_t crossing_terms = 0;
+  std::size_t block_solves = 0;
+  std::size_t block_certified = 0;
+  std::size_t block_improvements = 0;
+  std::size_t block_sweeps = 0;
+  std::size_t block_max_lp_columns = 0;
   /// Cells flipped by local search.
   std::size_t local_search_flips = 0;
   /// Cells changed by group moves (and the single flips between their sweeps).
@@ -151,6 +181,14 @@ struct LabelingResult {
 /// status is in the message), kCancelled (ctx.ShouldStop()).
 /// Deterministic: same energy and options give the same result for any ctx.num_threads.
 [[nodiscard]] Expected<LabelingResult> SolveLabeling(const EnergyInput& energy,
+                                                     const LabelingOptions& options,
+                                                     const RunContext& ctx) noexcept;
+
+/// The same with a partition of the cells into blocks (one block id per cell, ids below
+/// energy.NumCells(); ignored for fixed cells), which "blocks" needs and "auto" may use.
+/// kInvalidInput when the partition does not fit the energy.
+[[nodiscard]] Expected<LabelingResult> SolveLabeling(const EnergyInput& energy,
+                                                     std::span<const std::uint32_t> block_of_cell,
                                                      const LabelingOptions& options,
                                                      const RunContext& ctx) noexcept;
 

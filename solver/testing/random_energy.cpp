@@ -151,4 +151,23 @@ EnergyInput GridEnergy(const GridEnergySpec& spec) {
   return e;
 }
 
+std::vector<std::uint32_t> GridBlocks(const GridEnergySpec& spec, int block_size) {
+  const auto blocks_along = [&](int n) {
+    return static_cast<std::uint32_t>((n + block_size - 1) / block_size);
+  };
+  const std::uint32_t bx = blocks_along(spec.nx), by = blocks_along(spec.ny);
+  std::vector<std::uint32_t> block_of_cell;
+  for (int k = 0; k < spec.nz; ++k) {
+    for (int j = 0; j < spec.ny; ++j) {
+      for (int i = 0; i < spec.nx; ++i) {
+        const std::uint32_t b[3] = {static_cast<std::uint32_t>(i / block_size),
+                                    static_cast<std::uint32_t>(j / block_size),
+                                    static_cast<std::uint32_t>(k / block_size)};
+        block_of_cell.push_back((b[2] * by + b[1]) * bx + b[0]);
+      }
+    }
+  }
+  return block_of_cell;
+}
+
 }  // namespace linesurf::solver::testing

@@ -1,9 +1,10 @@
 #pragma once
 // Seeded random energies for the solver's tests and benchmarks (test support, not library code).
 
-#include <cstdint>
-
 #include "solver/energy/energy_input.h"
+
+#include <cstdint>
+#include <vector>
 
 namespace linesurf::solver::testing {
 
@@ -35,5 +36,8 @@ struct GridEnergySpec {
   std::uint64_t seed = 1;
 };
 [[nodiscard]] EnergyInput GridEnergy(const GridEnergySpec& spec);
+
+/// Block id per cell of GridEnergy(spec): cubes of `block_size`^3 cells, numbered x fastest.
+[[nodiscard]] std::vector<std::uint32_t> GridBlocks(const GridEnergySpec& spec, int block_size);
 
 }  // namespace linesurf::solver::testing

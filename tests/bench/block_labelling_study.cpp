@@ -1,0 +1,248 @@
+// The per-block labelling ("blocks", solver/lp/block_labeling.h) against the global solve
+// (docs/benchmarks.md, "Per-block labelling"). Prints Markdown rows.
+//   linesurf_block_labelling_study grids SIZES EDGES [global=clp] [threads=2] [inner=auto]
+//       solver::testing::GridEnergy n^3 for each n of SIZES, cut into cubes of each edge of
+//       EDGES (comma lists); the global solve with the backend `global` (clp, pdhg, none).
+//   linesurf_block_labelling_study scene PATH given|detected MAX_CELLS [global=none]
+//                                  [threads=2] [sweeps=2] [inner=auto]
+//       the energy that `reconstruct` builds with default options (given or detected planes)
+//       on the monolithic complex, its cells cut into k-d blocks of at most each of MAX_CELLS
+//       cells (pipeline::CentroidBlocks); then the global solve with `global` (auto, pdhg,
+//       none).
+// `inner` is LabelingOptions::block_backend.
+
+#include "engine/io/read_scene.h"
+#include "engine/pipeline/centroid_blocks.h"
+#include "engine/pipeline/decide_scene_mode.h"
+#include "engine/pipeline/detect_scene_planes.h"
+#include "engine/pipeline/reconstruct.h"
+#include "engine/pipeline/scene_box.h"
+#include "solver/lp/lp_backend.h"
+#include "solver/testing/random_energy.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace linesurf {
+namespace {
+
+[[noreturn]] void Fail(const Error& e) {
+  std::fprintf(stderr, "block_labelling_study: %s\n", e.ToString().c_str());
+  std::exit(1);
+}
+
+template <typename T>
+T Take(Expected<T>&& e) {
+  if (!e) Fail(e.error());
+  return std::move(e.value());
+}
+
+std::vector<double> ParseList(const char* text) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(std::stod(item));
+  return out;
+}
+
+double Seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct Row {
+  std::string energy;
+  std::string partition;
+  solver::LabelingResult result;
+  double seconds = 0.0;
+};
+
+void PrintHeader() {
+  std::printf(
+      "| energy | partition | method | blocks | colours | crossing terms | block solves (LP-free) "
+      "| largest block LP | sweeps | labels' energy | lower bound | gap | full cells | wall s |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+}
+
+void Print(const Row& row) {
+  const solver::LabelingResult& r = row.result;
+  std::size_t full = 0;
+  for (std::uint8_t l : r.labels) full += l;
+  const double gap =
+      100.0 * (r.labels_objective - r.lower_bound) / std::max(std::abs(r.labels_objective), 1e-12);
+  std::printf(
+      "| %s | %s | %s | %zu | %zu | %zu | %zu (%zu) | %zu | %zu | %.4f | %.4f (%s) | "
+      "%.2f %% | %zu | %.1f |\n",
+      row.energy.c_str(),
+      row.partition.c_str(),
+      r.backend.c_str(),
+      r.blocks,
+      r.block_colours,
+      r.crossing_terms,
+      r.block_solves,
+      r.block_certified,
+      r.block_max_lp_columns,
+      r.block_sweeps,
+      r.labels_objective,
+      r.lower_bound,
+      r.lower_bound_source.c_str(),
+      gap,
+      full,
+      row.seconds);
+  std::fflush(stdout);
+}
+
+// Progress of the solves on stderr.
+class StderrLog : public LogSink {
+ public:
+  void Write(LogLevel, const std::string& stage, const std::string& message) noexcept override {
+    std::fprintf(stderr, "[%s] %s\n", stage.c_str(), message.c_str());
+  }
+};
+
+Row Run(const std::string& name,
+        const std::string& partition,
+        const solver::EnergyInput& energy,
+        std::span<const std::uint32_t> blocks,
+        const solver::LabelingOptions& options,
+        int threads) {
+  StderrLog log;
+  RunContext ctx;
+  ctx.num_threads = threads;
+  ctx.log = &log;
+  const auto start = std::chrono::steady_clock::now();
+  Row row{name, partition, Take(solver::SolveLabeling(energy, blocks, options, ctx)), 0.0};
+  row.seconds = Seconds(start);
+  return row;
+}
+
+int Grids(const char* sizes,
+          const char* edges,
+          const std::string& global,
+          int threads,
+          const std::string& inner) {
+  PrintHeader();
+  for (double n : ParseList(sizes)) {
+    solver::testing::GridEnergySpec spec;
+    spec.nx = spec.ny = spec.nz = static_cast<int>(n);
+    const solver::EnergyInput energy = solver::testing::GridEnergy(spec);
+    const std::string name = "grid " + std::to_string(spec.nx) + "^3";
+    solver::LabelingOptions options;
+    options.backend = "blocks";
+    options.block_backend = inner;
+    for (double edge : ParseList(edges)) {
+      const auto blocks = solver::testing::GridBlocks(spec, static_cast<int>(edge));
+      const std::string partition = "cubes of " + std::to_string(static_cast<int>(edge)) + "^3";
+      Print(Run(name, partition, energy, blocks, options, threads));
+    }
+    if (global != "none") {
+      options.backend = global;
+      Print(Run(name, "none", energy, {}, options, threads));
+    }
+  }
+  return 0;
+}
+
+int SceneStudy(const char* path,
+               const std::string& planes,
+               const char* max_cells,
+               const std::string& global,
+               int threads,
+               int sweeps,
+               const std::string& inner) {
+  const auto start = std::chrono::steady_clock::now();
+  Scene input = Take(io::ReadScene(path, {}));
+  pipeline::ReconstructOptions o;
+  RunContext ctx;
+  ctx.num_threads = threads;
+  Scene scene;
+  if (planes == "given") {
+    scene = Take(pipeline::SanitizeScene(std::move(input), o.sanitize)).scene;
+  } else {
+    scene =
+        Take(pipeline::SanitizeAndDetectPlanes(std::move(input), o.sanitize, o.planes, ctx)).scene;
+  }
+  const double detect_seconds = Seconds(start);
+  const Box3 box = pipeline::SceneBox(scene, o.box_margin);
+  const auto complex_start = std::chrono::steady_clock::now();
+  const partition::CellComplexResult built =
+      Take(partition::BuildCellComplex(box, scene.planes.raw(), o.complex, ctx));
+  const double complex_seconds = Seconds(complex_start);
+  const auto evidence_start = std::chrono::steady_clock::now();
+  const bool interior = pipeline::DecideSceneMode(scene).interior;
+  const pipeline::EvidenceResult evidence = Take(pipeline::ComputeEvidence(
+      built.complex,
+      scene,
+      o.energy,
+      interior ? pipeline::BoundaryMode::kInterior : pipeline::BoundaryMode::kExterior,
+      ctx));
+  const double evidence_seconds = Seconds(evidence_start);
+  const std::string name = std::string("Andalusian, ") + planes + " planes";
+  std::printf(
+      "%s: %zu planes, %zu cells, %zu pairs, %zu structural, %zu parity, %s; "
+      "sanitize+detect %.1f s, complex %.1f s, evidence %.1f s, threads %d\n\n",
+      name.c_str(),
+      scene.planes.size(),
+      built.complex.NumCells(),
+      evidence.energy.NumPairs(),
+      evidence.energy.NumStructuralGroups(),
+      evidence.energy.NumParityGroups(),
+      interior ? "interior" : "exterior",
+      detect_seconds,
+      complex_seconds,
+      evidence_seconds,
+      threads);
+  std::fflush(stdout);
+  PrintHeader();
+  solver::LabelingOptions options;
+  options.backend = "blocks";
+  options.block_sweeps = sweeps;
+  options.block_backend = inner;
+  for (double m : ParseList(max_cells)) {
+    const auto partition_start = std::chrono::steady_clock::now();
+    const std::vector<std::uint32_t> blocks =
+        pipeline::CentroidBlocks(built.complex, static_cast<std::size_t>(m));
+    const double partition_seconds = Seconds(partition_start);
+    Row row = Run(name,
+                  "k-d, <= " + std::to_string(static_cast<int>(m)) + " cells",
+                  evidence.energy,
+                  blocks,
+                  options,
+                  threads);
+    row.partition += " (" + std::to_string(partition_seconds).substr(0, 4) + " s)";
+    Print(row);
+  }
+  if (global != "none") {
+    options.backend = global;
+    Print(Run(name, "none", evidence.energy, {}, options, threads));
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace linesurf
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  const auto arg = [&](int i, const char* fallback) { return argc > i ? argv[i] : fallback; };
+  if (mode == "grids" && argc >= 4) {
+    return linesurf::Grids(argv[2], argv[3], arg(4, "clp"), std::atoi(arg(5, "2")), arg(6, "auto"));
+  }
+  if (mode == "scene" && argc >= 5) {
+    return linesurf::SceneStudy(argv[2],
+                                argv[3],
+                                argv[4],
+                                arg(5, "none"),
+                                std::atoi(arg(6, "2")),
+                                std::atoi(arg(7, "2")),
+                                arg(8, "auto"));
+  }
+  std::fprintf(
+      stderr,
+      "usage: linesurf_block_labelling_study grids SIZES EDGES [global] [threads] [inner] | "
+      "scene PATH given|detected MAX_CELLS [global] [threads] [sweeps] [inner]\n");
+  return 2;
+}
