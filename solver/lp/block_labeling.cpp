@@ -6,8 +6,10 @@
 #include "solver/energy/term_incidence.h"
 #include "solver/lp/band_fixing.h"
 #include "solver/lp/cell_blocks.h"
+#include "solver/lp/dual_ascent.h"
 #include "solver/lp/group_moves.h"
 #include "solver/lp/round_labels.h"
+#include "solver/lp/window_polish.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -27,6 +29,10 @@ namespace {
 constexpr const char* kStage = "solve_labeling";
 // The bound source of a block decided by max-flow alone.
 constexpr const char* kCertificate = "pairwise certificate";
+// A pass of the dual ascent that raises the bound by less than this (relative) ends it.
+constexpr double kAscentGain = 1e-4;
+constexpr const char* kPairwiseBound =
+    "pairwise optimum (max-flow of the unary and pairwise terms, the others >= 0)";
 
 // What one solve of a block's sub-energy gives, for its chosen cells (the block's free cells).
 struct BlockOutcome {
@@ -149,10 +155,12 @@ std::string CountSources(const std::vector<BlockOutcome>& outcomes) {
 class BlockSolver {
  public:
   BlockSolver(const EnergyInput& energy,
+              const ReducedEnergy& reduced,
               std::span<const std::uint32_t> block_of_cell,
               const LabelingOptions& options,
               const RunContext& ctx)
       : energy_(energy),
+        reduced_(reduced),
         options_(options),
         ctx_(ctx),
         blocks_(MakeCellBlocks(energy, block_of_cell)),
@@ -166,24 +174,35 @@ class BlockSolver {
 
   LabelingResult Run() {
     LabelingResult result;
-    result.labels.assign(energy_.NumCells(), 0);
-    for (std::size_t c = 0; c < energy_.NumCells(); ++c) {
-      result.labels[c] = energy_.fixed[CellId(c)] == CellFix::kFull ? 1 : 0;
-    }
+    // Start: the exact minimum of the unary and pairwise terms; its value bounds the optimum.
+    result.labels = PairwiseLabels(energy_, ctx_);
     result.relaxed.assign(result.labels.begin(), result.labels.end());
-    const double fixed_energy = FixedEnergy(energy_, result.labels);
-
-    SolveInteriors(result, fixed_energy);
-    RoundedLabels rounded = RoundLabels(energy_, result.relaxed);
-    result.fractional_cells = rounded.fractional_cells;
-    result.tie_cells = rounded.tie_cells;
-    result.rounded_objective = energy_.Evaluate(std::span<const std::uint8_t>(rounded.labels));
+    result.rounded_objective = energy_.Evaluate(std::span<const std::uint8_t>(result.labels));
+    result.lower_bound = result.rounded_objective - HigherOrderEnergy(energy_, result.labels);
+    result.lower_bound_source = kPairwiseBound;
+    if (options_.block_split_bound) SplitBound(result);
+    if (options_.block_bound_passes > 0) AscentBound(result);
     Coordinate(result);
     result.local_search_flips = ImproveLabels(energy_, options_.local_search_passes, result.labels);
     result.group_move_changes =
         ImproveByGroupMoves(energy_, options_.group_move_passes, result.labels);
+    WindowPolishOptions windows;
+    windows.window_cells = options_.window_cells;
+    windows.max_nodes = options_.window_max_nodes;
+    windows.max_windows = options_.window_max_count;
+    const WindowPolishStats polished =
+        PolishInWindows(energy_, result.relaxed, windows, ctx_, result.labels);
+    result.windows = polished.windows;
+    result.improved_windows = polished.improved_windows;
+    result.window_changes = polished.changed_cells;
+    Log("windows: " + std::to_string(polished.windows) + ", " +
+        std::to_string(polished.improved_windows) + " improved");
     result.labels_objective = energy_.Evaluate(std::span<const std::uint8_t>(result.labels));
     result.relaxed_objective = energy_.Evaluate(std::span<const double>(result.relaxed));
+    for (CellId c : free_) {
+      const double x = result.relaxed[c.index()];
+      result.fractional_cells += std::abs(x - std::round(x)) > kTieTolerance ? 1 : 0;
+    }
     result.lower_bound = std::min(result.lower_bound, result.labels_objective);
     result.blocks = 0;
     for (std::size_t b = 0; b < blocks_.NumBlocks(); ++b) {
@@ -193,19 +212,25 @@ class BlockSolver {
     result.crossing_terms = blocks_.crossing_terms;
     result.backend = "blocks";
     result.status = "optimal";
-    result.method =
-        "blocks (" + std::to_string(result.blocks) + " blocks, " +
-        std::to_string(blocks_.num_colours) + " colours; block solves: " + CountBackends() + "), " +
-        std::to_string(result.block_sweeps) + " coordination sweeps with the seams fixed";
+    result.method = "blocks (" + std::to_string(result.blocks) + " blocks, " +
+                    std::to_string(blocks_.num_colours) +
+                    " colours): max-flow of the pairwise part, then " +
+                    std::to_string(result.block_sweeps) +
+                    " sweeps of block solves with the seams fixed (" + CountBackends() + ")";
     if (options_.local_search_passes > 0) result.method += ", local search";
     if (options_.group_move_passes > 0) result.method += ", group moves";
+    if (polished.windows > 0) {
+      result.method +=
+          ", exact windows of " + std::to_string(options_.window_cells) + " cells (cbc)";
+    }
     result.seconds = Elapsed();
     return result;
   }
 
  private:
-  // Step 1: every block's interior energy at once; their bounds sum to the lower bound.
-  void SolveInteriors(LabelingResult& result, double fixed_energy) {
+  // The bound of the Lagrangian split: every block's interior energy at once; their bounds sum
+  // to a lower bound, kept when it beats the pairwise one.
+  void SplitBound(LabelingResult& result) {
     std::vector<std::uint32_t> list;
     for (std::uint32_t b = 0; b < blocks_.NumBlocks(); ++b) {
       if (!blocks_.cells[BlockId(b)].empty()) list.push_back(b);
@@ -215,26 +240,38 @@ class BlockSolver {
       const auto cells = blocks_.cells[BlockId(b)];
       return SolveBlock(InteriorEnergy(energy_, incidence_, cells), cells.size(), inner_, ctx_);
     });
-    double bound = fixed_energy;
+    double bound = FixedEnergy(energy_, result.labels);
     for (std::uint32_t b : list) {
-      const BlockOutcome& o = outcomes[b];
-      bound += o.lower_bound;  // -infinity when one block proves nothing
-      Count(result, o);
-      const auto cells = blocks_.cells[BlockId(b)];
-      for (std::size_t i = 0; i < cells.size(); ++i) {
-        result.labels[cells[i].index()] = o.labels[i];
-        result.relaxed[cells[i].index()] = o.relaxed[i];
-      }
+      bound += outcomes[b].lower_bound;  // -infinity when one block proves nothing
+      Count(result, outcomes[b]);
     }
-    result.lower_bound = bound;
-    Log("interior solves of " + std::to_string(list.size()) + " blocks done");
-    result.lower_bound_source = "block split: the blocks' interior bounds (" +
-                                CountSources(outcomes) +
-                                ") plus the fixed terms, the terms across blocks counted 0";
+    Log("interior solves of " + std::to_string(list.size()) + " blocks done, split bound " +
+        std::to_string(bound) + ", pairwise bound " + std::to_string(result.lower_bound));
+    if (bound > result.lower_bound) {
+      result.lower_bound = bound;
+      result.lower_bound_source = "block split: the blocks' interior bounds (" +
+                                  CountSources(outcomes) +
+                                  ") plus the fixed terms, the terms across blocks counted 0";
+    }
     CheckTime();
   }
 
-  // Step 2: alternating seam fixing by colour until no block is left to re-solve.
+  // The Lagrangian bound of the global LP raised by coordinate ascent (dual_ascent.h), kept
+  // when it beats the others.
+  void AscentBound(LabelingResult& result) {
+    const DualAscentResult ascent =
+        DualAscentBound(reduced_, options_.block_bound_passes, kAscentGain);
+    Log("dual ascent bound " + std::to_string(ascent.bound) + " after " +
+        std::to_string(ascent.passes) + " passes");
+    if (ascent.bound > result.lower_bound) {
+      result.lower_bound = ascent.bound;
+      result.lower_bound_source =
+          "lp dual bound (coordinate ascent, " + std::to_string(ascent.passes) + " passes)";
+    }
+    CheckTime();
+  }
+
+  // Alternating seam fixing by colour until no block is left to re-solve.
   void Coordinate(LabelingResult& result) {
     std::vector<std::uint8_t> dirty(blocks_.NumBlocks(), 0);
     for (std::size_t b = 0; b < blocks_.NumBlocks(); ++b) {
@@ -264,20 +301,25 @@ class BlockSolver {
           dirty[b] = 0;
           BlockOutcome& o = outcomes[b];
           Count(result, o);
-          const double tolerance = kImproveTolerance * (1.0 + std::abs(o.start_objective));
-          if (!(o.objective < o.start_objective - tolerance)) continue;
           const auto cells = blocks_.cells[BlockId(b)];
-          for (std::size_t i = 0; i < cells.size(); ++i)
-            result.labels[cells[i].index()] = o.labels[i];
-          ++result.block_improvements;
-          for (BlockId m : blocks_.neighbours[BlockId(b)]) dirty[m.index()] = 1;
+          for (std::size_t i = 0; i < cells.size(); ++i) {
+            result.relaxed[cells[i].index()] = o.relaxed[i];
+          }
+          const double tolerance = kImproveTolerance * (1.0 + std::abs(o.start_objective));
+          if (o.objective < o.start_objective - tolerance) {
+            for (std::size_t i = 0; i < cells.size(); ++i) {
+              result.labels[cells[i].index()] = o.labels[i];
+            }
+            ++result.block_improvements;
+            for (BlockId m : blocks_.neighbours[BlockId(b)]) dirty[m.index()] = 1;
+          }
           o = BlockOutcome{};
         }
         CheckTime();
       }
       if (!any) break;
       ++result.block_sweeps;
-      Log("coordination sweep " + std::to_string(sweep + 1) + " done, " +
+      Log("sweep " + std::to_string(sweep + 1) + " done, " +
           std::to_string(result.block_improvements) + " block improvements so far");
     }
   }
@@ -320,6 +362,7 @@ class BlockSolver {
   }
 
   const EnergyInput& energy_;
+  const ReducedEnergy& reduced_;
   const LabelingOptions& options_;
   const RunContext& ctx_;
   LabelingOptions inner_;
@@ -333,10 +376,11 @@ class BlockSolver {
 }  // namespace
 
 LabelingResult SolveInBlocks(const EnergyInput& energy,
+                             const ReducedEnergy& reduced,
                              std::span<const std::uint32_t> block_of_cell,
                              const LabelingOptions& options,
                              const RunContext& ctx) {
-  return BlockSolver(energy, block_of_cell, options, ctx).Run();
+  return BlockSolver(energy, reduced, block_of_cell, options, ctx).Run();
 }
 
 }  // namespace linesurf::solver

@@ -148,7 +148,7 @@ LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> b
   if (result.backend == "blocks") {
     LINESURF_THROW_IF(block_of_cell.empty(), kInvalidOptions, kStage,
                       "backend 'blocks' needs a partition of the cells into blocks");
-    LabelingResult blocks = SolveInBlocks(energy, block_of_cell, options, ctx);
+    LabelingResult blocks = SolveInBlocks(energy, reduced, block_of_cell, options, ctx);
     blocks.lp_columns = shape.columns;
     blocks.lp_rows = shape.rows;
     blocks.lp_nonzeros = shape.nonzeros;
@@ -227,6 +227,9 @@ Status LabelingOptions::Validate() const {
   }
   if (block_sweeps < 0 || block_sweeps > 100) {
     return InvalidOption("block_sweeps: must be in [0, 100]");
+  }
+  if (block_bound_passes < 0 || block_bound_passes > 10000) {
+    return InvalidOption("block_bound_passes: must be in [0, 10000]");
   }
   if (band_rings < 0 || band_rings > 16) return InvalidOption("band_rings: must be in [0, 16]");
   if (!(clp_tolerance > 0.0 && clp_tolerance <= 1e-2)) {

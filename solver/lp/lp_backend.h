@@ -87,6 +87,12 @@ struct LabelingOptions {
   /// Coordination sweeps of "blocks" (each re-solves, colour by colour, the blocks whose
   /// neighbours changed); [0, 100]. 0 = the interior solves and the final moves only.
   int block_sweeps = 2;
+  /// "blocks" also solves every block's interior energy for the bound of the Lagrangian split
+  /// (block_labeling.h): one more LP per block. Off: the bound is the pairwise optimum.
+  bool block_split_bound = false;
+  /// Passes of dual coordinate ascent on the global LP for the bound of "blocks"
+  /// (dual_ascent.h; it stops earlier when a pass gains less than 1e-4); [0, 10000]; 0 = none.
+  int block_bound_passes = 50;
   /// Growth steps of the band through shared parity groups (edges and vertices); [0, 16].
   int band_rings = 1;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.

@@ -16,6 +16,7 @@
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/reconstruct.h"
+#include "tests/bench/crop_scene.h"
 #include "solver/lp/lp_backend.h"
 #include "solver/testing/random_energy.h"
 #include "tools/gen/synthesize.h"
@@ -213,41 +214,6 @@ int Scenes(double cbc_seconds) {
   return 0;
 }
 
-// The segments with both ends in [lo, hi] and the planes that keep a member.
-Scene Crop(const Scene& scene, const Vec3& lo, const Vec3& hi) {
-  auto inside = [&](const Vec3& p) {
-    for (int a = 0; a < 3; ++a) {
-      if (p[a] < lo[a] || p[a] > hi[a]) return false;
-    }
-    return true;
-  };
-  Scene out;
-  out.viewpoints = scene.viewpoints;
-  out.world_from_local = scene.world_from_local;
-  std::vector<int> new_plane(scene.planes.size(), -1);
-  for (std::size_t i = 0; i < scene.NumSegments(); ++i) {
-    const SegmentId id(i);
-    const Segment3& s = scene.segments[id];
-    if (!inside(s.p1) || !inside(s.p2)) continue;
-    out.segments.push_back(s);
-    const auto views = scene.observations[id];
-    out.observations.AddRow(views);
-    if (scene.residuals.size() == scene.NumSegments()) out.residuals.push_back(scene.residuals[i]);
-    PlaneMembership m;
-    const PlaneMembership& old = scene.memberships[id];
-    for (std::uint8_t k = 0; k < old.count; ++k) {
-      int& p = new_plane[old.planes[k].index()];
-      if (p < 0) {
-        p = static_cast<int>(out.planes.size());
-        out.planes.push_back(scene.planes[old.planes[k]]);
-      }
-      m.Add(PlaneId(static_cast<std::size_t>(p)));
-    }
-    out.memberships.push_back(m);
-  }
-  return out;
-}
-
 int Andalusian(const char* path, const char* box, double cbc_seconds) {
   auto scene = io::ReadScene(path, {});
   if (!scene) Fail(scene.error());
@@ -256,7 +222,7 @@ int Andalusian(const char* path, const char* box, double cbc_seconds) {
     std::fprintf(stderr, "labelling_study: the box needs 6 numbers\n");
     return 2;
   }
-  const Scene crop = Crop(*scene, Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5]));
+  const Scene crop = bench::CropScene(*scene, Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5]));
   pipeline::ReconstructOptions o;
   o.use_given_planes = true;
   o.scene_mode = pipeline::SceneMode::kExterior;

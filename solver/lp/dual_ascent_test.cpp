@@ -1,0 +1,68 @@
+#include "solver/lp/dual_ascent.h"
+
+#include "solver/lp/lp_backend.h"
+#include "solver/testing/random_energy.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+namespace linesurf::solver {
+namespace {
+
+constexpr double kTolerance = 1e-7;
+
+double LpOptimum(const EnergyInput& e) {
+  LabelingOptions options;
+  options.backend = "clp";
+  const auto r = SolveLabeling(e, options, RunContext{});
+  EXPECT_TRUE(r) << r.error().ToString();
+  return r ? r->relaxed_objective : 0.0;
+}
+
+// The bound at zero multipliers: the constant and the negative unary costs.
+double TrivialBound(const ReducedEnergy& r) {
+  double bound = r.constant;
+  for (double u : r.unary) bound += std::min(0.0, u);
+  return bound;
+}
+
+TEST(DualAscent, BoundsTheLpOptimumOfRandomEnergies) {
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    testing::RandomEnergySpec spec;
+    spec.num_cells = 30;
+    spec.num_pairs = 50;
+    spec.num_structural = 8;
+    spec.num_parity = 10;
+    spec.seed = seed;
+    const EnergyInput e = testing::RandomEnergy(spec);
+    const ReducedEnergy reduced = ReduceEnergy(e);
+    const DualAscentResult ascent = DualAscentBound(reduced, 50, 0.0);
+    EXPECT_LE(ascent.bound, LpOptimum(e) + kTolerance) << "seed " << seed;
+    EXPECT_GE(ascent.bound, TrivialBound(reduced) - kTolerance) << "seed " << seed;
+  }
+}
+
+TEST(DualAscent, NeverLowersTheBoundAndComesCloseOnAGridEnergy) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 10;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const ReducedEnergy reduced = ReduceEnergy(e);
+  const double optimum = LpOptimum(e);
+  double previous = TrivialBound(reduced);
+  for (int passes : {1, 5, 20, 100}) {
+    const DualAscentResult ascent = DualAscentBound(reduced, passes, 0.0);
+    EXPECT_GE(ascent.bound, previous - kTolerance) << passes;
+    EXPECT_LE(ascent.bound, optimum + kTolerance) << passes;
+    previous = ascent.bound;
+    std::printf("grid 10^3: %d passes: bound %.6f, LP optimum %.6f (%.2f %%)\n",
+                passes,
+                ascent.bound,
+                optimum,
+                100.0 * ascent.bound / optimum);
+  }
+}
+
+}  // namespace
+}  // namespace linesurf::solver
