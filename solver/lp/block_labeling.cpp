@@ -15,8 +15,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -50,6 +52,20 @@ struct BlockOutcome {
   std::size_t lp_columns = 0;
   std::int64_t iterations = 0;
 };
+
+// Calls visit(c) for every cell of term t.
+template <typename Visit>
+void ForTermCells(const EnergyInput& e, const TermRef& t, Visit&& visit) {
+  if (t.kind == TermKind::kPair) {
+    visit(e.pairs[t.index].a);
+    visit(e.pairs[t.index].b);
+    return;
+  }
+  for (CellId c :
+       t.kind == TermKind::kStructural ? e.StructuralGroup(t.index) : e.ParityGroup(t.index)) {
+    visit(c);
+  }
+}
 
 // Minimises a block's sub-energy: the exact max-flow shortcut, else the inner SolveLabeling.
 BlockOutcome SolveBlock(const SubEnergy& sub,
@@ -164,6 +180,7 @@ class BlockSolver {
         options_(options),
         ctx_(ctx),
         blocks_(MakeCellBlocks(energy, block_of_cell)),
+        block_of_cell_(block_of_cell),
         free_(energy.FreeCells()),
         incidence_(energy, free_),
         start_(std::chrono::steady_clock::now()) {
@@ -182,7 +199,7 @@ class BlockSolver {
     result.lower_bound_source = kPairwiseBound;
     if (options_.block_split_bound) SplitBound(result);
     if (options_.block_bound_passes > 0) AscentBound(result);
-    Coordinate(result);
+    Sweep(result);
     result.local_search_flips = ImproveLabels(energy_, options_.local_search_passes, result.labels);
     result.group_move_changes =
         ImproveByGroupMoves(energy_, options_.group_move_passes, result.labels);
@@ -208,15 +225,13 @@ class BlockSolver {
     for (std::size_t b = 0; b < blocks_.NumBlocks(); ++b) {
       result.blocks += blocks_.cells[BlockId(b)].empty() ? 0 : 1;
     }
-    result.block_colours = blocks_.num_colours;
     result.crossing_terms = blocks_.crossing_terms;
     result.backend = "blocks";
     result.status = "optimal";
-    result.method = "blocks (" + std::to_string(result.blocks) + " blocks, " +
-                    std::to_string(blocks_.num_colours) +
-                    " colours): max-flow of the pairwise part, then " +
-                    std::to_string(result.block_sweeps) +
-                    " sweeps of block solves with the seams fixed (" + CountBackends() + ")";
+    result.method = "blocks (" + std::to_string(result.blocks) +
+                    " blocks): max-flow of the pairwise part, then " +
+                    std::to_string(result.block_sweeps) + " sweeps of block solves with " +
+                    std::to_string(options_.block_halo) + "-hop halos (" + CountBackends() + ")";
     if (options_.local_search_passes > 0) result.method += ", local search";
     if (options_.group_move_passes > 0) result.method += ", group moves";
     if (polished.windows > 0) {
@@ -271,57 +286,106 @@ class BlockSolver {
     CheckTime();
   }
 
-  // Alternating seam fixing by colour until no block is left to re-solve.
-  void Coordinate(LabelingResult& result) {
+  // The free cells within `block_halo` term hops of a block's cells, outside the block.
+  [[nodiscard]] std::vector<CellId> Halo(std::uint32_t b) const {
+    const auto cells = blocks_.cells[BlockId(b)];
+    std::vector<CellId> ring(cells.begin(), cells.end()), halo;
+    for (int hop = 0; hop < options_.block_halo; ++hop) {
+      std::vector<CellId> next;
+      for (CellId c : ring) {
+        for (const TermRef& t : incidence_.Terms(incidence_.Slot(c))) {
+          ForTermCells(energy_, t, [&](CellId d) {
+            if (energy_.fixed[d] == CellFix::kFree && block_of_cell_[d.index()] != b) {
+              next.push_back(d);
+            }
+          });
+        }
+      }
+      std::sort(next.begin(), next.end());
+      next.erase(std::unique(next.begin(), next.end()), next.end());
+      std::vector<CellId> grown;
+      std::set_union(halo.begin(), halo.end(), next.begin(), next.end(), std::back_inserter(grown));
+      halo.swap(grown);
+      ring.swap(next);
+    }
+    return halo;
+  }
+
+  // Sweeps of block solves: every dirty block with its halo free, all from the same labels in
+  // parallel; then, in block order, each proposal is taken when, given the labels as they are by
+  // then, it lowers the energy (its change is re-evaluated, so overlapping proposals never raise
+  // the energy). Blocks whose cells or neighbours changed are solved again.
+  void Sweep(LabelingResult& result) {
     std::vector<std::uint8_t> dirty(blocks_.NumBlocks(), 0);
     for (std::size_t b = 0; b < blocks_.NumBlocks(); ++b) {
       dirty[b] = blocks_.cells[BlockId(b)].empty() ? 0 : 1;
     }
     std::vector<BlockOutcome> outcomes(blocks_.NumBlocks());
+    std::vector<std::vector<CellId>> chosen(blocks_.NumBlocks());
     for (int sweep = 0; sweep < options_.block_sweeps; ++sweep) {
-      bool any = false;
-      for (std::uint32_t colour = 0; colour < blocks_.num_colours; ++colour) {
-        std::vector<std::uint32_t> list;
-        for (std::uint32_t b = 0; b < blocks_.NumBlocks(); ++b) {
-          if (dirty[b] != 0 && blocks_.colour[b] == colour) list.push_back(b);
-        }
-        if (list.empty()) continue;
-        any = true;
-        const std::vector<std::uint8_t>& labels = result.labels;
-        ForBlocks(ctx_, list, outcomes, [&](std::uint32_t b) {
-          const auto cells = blocks_.cells[BlockId(b)];
-          const SubEnergy sub = RestrictEnergy(energy_, incidence_, cells, labels);
-          std::vector<std::uint8_t> local(sub.cells.size());
-          for (std::size_t i = 0; i < local.size(); ++i) local[i] = labels[sub.cells[i].index()];
-          BlockOutcome o = SolveBlock(sub, cells.size(), inner_, ctx_);
-          o.start_objective = sub.energy.Evaluate(std::span<const std::uint8_t>(local));
-          return o;
-        });
-        for (std::uint32_t b : list) {  // blocks of one colour share no term: order is free
-          dirty[b] = 0;
-          BlockOutcome& o = outcomes[b];
-          Count(result, o);
-          const auto cells = blocks_.cells[BlockId(b)];
-          for (std::size_t i = 0; i < cells.size(); ++i) {
-            result.relaxed[cells[i].index()] = o.relaxed[i];
-          }
-          const double tolerance = kImproveTolerance * (1.0 + std::abs(o.start_objective));
-          if (o.objective < o.start_objective - tolerance) {
-            for (std::size_t i = 0; i < cells.size(); ++i) {
-              result.labels[cells[i].index()] = o.labels[i];
-            }
-            ++result.block_improvements;
-            for (BlockId m : blocks_.neighbours[BlockId(b)]) dirty[m.index()] = 1;
-          }
-          o = BlockOutcome{};
-        }
-        CheckTime();
+      std::vector<std::uint32_t> list;
+      for (std::uint32_t b = 0; b < blocks_.NumBlocks(); ++b) {
+        if (dirty[b] != 0) list.push_back(b);
       }
-      if (!any) break;
+      if (list.empty()) break;
+      const std::vector<std::uint8_t>& labels = result.labels;
+      ForBlocks(ctx_, list, outcomes, [&](std::uint32_t b) {
+        const auto cells = blocks_.cells[BlockId(b)];
+        std::vector<CellId> all(cells.begin(), cells.end());
+        const std::vector<CellId> halo = Halo(b);
+        all.insert(all.end(), halo.begin(), halo.end());
+        const SubEnergy sub = RestrictEnergy(energy_, incidence_, all, labels);
+        BlockOutcome o = SolveBlock(sub, all.size(), inner_, ctx_);
+        chosen[b] = std::move(all);
+        return o;
+      });
+      std::vector<CellId> changed;
+      std::vector<std::uint8_t> touched(blocks_.NumBlocks(), 0);
+      for (std::uint32_t b : list) {
+        dirty[b] = 0;
+        BlockOutcome& o = outcomes[b];
+        Count(result, o);
+        const auto cells = blocks_.cells[BlockId(b)];
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+          result.relaxed[cells[i].index()] = o.relaxed[i];
+        }
+        changed.clear();
+        for (std::size_t i = 0; i < chosen[b].size(); ++i) {
+          if (result.labels[chosen[b][i].index()] != o.labels[i]) changed.push_back(chosen[b][i]);
+        }
+        if (!changed.empty() && Lowers(changed, result.labels)) {
+          ++result.block_improvements;
+          for (CellId c : changed) touched[block_of_cell_[c.index()]] = 1;
+        }
+        o = BlockOutcome{};
+        chosen[b].clear();
+      }
+      for (std::uint32_t b = 0; b < blocks_.NumBlocks(); ++b) {
+        if (touched[b] == 0) continue;
+        dirty[b] = 1;
+        for (BlockId m : blocks_.neighbours[BlockId(b)]) dirty[m.index()] = 1;
+      }
+      CheckTime();
       ++result.block_sweeps;
       Log("sweep " + std::to_string(sweep + 1) + " done, " +
-          std::to_string(result.block_improvements) + " block improvements so far");
+          std::to_string(result.block_improvements) + " proposals taken so far");
     }
+  }
+
+  // Flips `changed` in `labels` when that lowers the energy; returns whether it did.
+  [[nodiscard]] bool Lowers(std::span<const CellId> changed,
+                            std::vector<std::uint8_t>& labels) const {
+    std::vector<CellId> sorted(changed.begin(), changed.end());
+    std::sort(sorted.begin(), sorted.end());
+    const SubEnergy sub = RestrictEnergy(energy_, incidence_, sorted, labels);
+    std::vector<std::uint8_t> local(sub.cells.size());
+    for (std::size_t i = 0; i < local.size(); ++i) local[i] = labels[sub.cells[i].index()];
+    const double before = sub.energy.Evaluate(std::span<const std::uint8_t>(local));
+    for (std::size_t i = 0; i < sorted.size(); ++i) local[i] ^= 1u;
+    const double after = sub.energy.Evaluate(std::span<const std::uint8_t>(local));
+    if (!(after < before - kImproveTolerance * (1.0 + std::abs(before)))) return false;
+    for (CellId c : sorted) labels[c.index()] ^= 1u;
+    return true;
   }
 
   void Count(LabelingResult& result, const BlockOutcome& o) {
@@ -367,6 +431,7 @@ class BlockSolver {
   const RunContext& ctx_;
   LabelingOptions inner_;
   CellBlocks blocks_;
+  std::span<const std::uint32_t> block_of_cell_;
   std::vector<CellId> free_;
   TermIncidence incidence_;
   std::chrono::steady_clock::time_point start_;

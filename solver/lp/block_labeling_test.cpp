@@ -49,22 +49,6 @@ void ExpectValid(const EnergyInput& e, const LabelingResult& r) {
   EXPECT_TRUE(std::isfinite(r.lower_bound));
 }
 
-// Exhaustive minimum over 0/1 labellings (fixed cells held).
-double BruteForceMinimum(const EnergyInput& e) {
-  const std::vector<CellId> free = e.FreeCells();
-  EXPECT_LE(free.size(), 16u);
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<std::uint8_t> labels(e.NumCells());
-  for (std::uint32_t mask = 0; mask < (1u << free.size()); ++mask) {
-    for (std::size_t c = 0; c < e.NumCells(); ++c) {
-      labels[c] = e.fixed[CellId(c)] == CellFix::kFull ? 1 : 0;
-    }
-    for (std::size_t j = 0; j < free.size(); ++j) labels[free[j].index()] = (mask >> j) & 1u;
-    best = std::min(best, e.Evaluate(std::span<const std::uint8_t>(labels)));
-  }
-  return best;
-}
-
 TEST(BlockLabeling, BoundsTheOptimumOfRandomEnergiesForRandomPartitions) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     testing::RandomEnergySpec spec;
@@ -77,7 +61,7 @@ TEST(BlockLabeling, BoundsTheOptimumOfRandomEnergiesForRandomPartitions) {
     Rng rng(MixSeed(seed, RngStage::kSynth, 0xb10c));
     std::vector<std::uint32_t> blocks(e.NumCells());
     for (std::uint32_t& b : blocks) b = static_cast<std::uint32_t>(rng.Below(4));
-    const double optimum = BruteForceMinimum(e);
+    const double optimum = testing::BruteForceMinimum(e);
     for (bool split : {false, true}) {
       LabelingOptions options;
       options.backend = "blocks";

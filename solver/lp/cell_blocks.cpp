@@ -68,17 +68,6 @@ CellBlocks MakeCellBlocks(const EnergyInput& energy, std::span<const std::uint32
     blocks.neighbours.AddRow(row);
   }
 
-  blocks.colour.assign(num_blocks, 0);
-  std::vector<std::uint8_t> used;
-  for (std::uint32_t b = 0; b < num_blocks; ++b) {
-    used.assign(blocks.num_colours + 1, 0);
-    for (BlockId m : blocks.neighbours[BlockId(b)]) {
-      if (m.value() < b) used[blocks.colour[m.index()]] = 1;
-    }
-    const auto free_colour = std::find(used.begin(), used.end(), std::uint8_t{0}) - used.begin();
-    blocks.colour[b] = static_cast<std::uint32_t>(free_colour);
-    blocks.num_colours = std::max(blocks.num_colours, blocks.colour[b] + 1);
-  }
   return blocks;
 }
 

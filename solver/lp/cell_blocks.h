@@ -1,8 +1,7 @@
 #pragma once
 // A partition of an energy's free cells into blocks, and how the blocks are coupled: two blocks
 // are neighbours when one term holds a free cell of each (fixed cells couple nothing, their
-// label never changes). A greedy colouring of that graph gives independent sets: blocks of one
-// colour share no term, so their sub-energies (sub_energy.h) can be solved at the same time.
+// label never changes), so a change in one block may make its neighbours' solves stale.
 
 #include "engine/core/csr.h"
 #include "engine/core/strong_id.h"
@@ -19,10 +18,6 @@ struct CellBlocks {
   Csr<BlockId, CellId> cells;
   /// Neighbouring blocks of each block, in increasing id order.
   Csr<BlockId, BlockId> neighbours;
-  /// Colour of each block: neighbours differ. Greedy in block id order (the smallest colour no
-  /// lower neighbour has), so it depends only on the partition and the terms.
-  std::vector<std::uint32_t> colour;
-  std::uint32_t num_colours = 0;
   /// Terms whose free cells lie in more than one block.
   std::size_t crossing_terms = 0;
 

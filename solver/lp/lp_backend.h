@@ -24,8 +24,8 @@
 ///               docs/results.md "Integral labelling").
 ///  - "blocks":  per-block solve for large complexes (block_labeling.h), given a partition of
 ///               the cells into blocks: each block's interior energy solved by
-///               LabelingOptions::block_backend, in parallel, then alternating seam fixing by
-///               colour; the bound is the sum of the blocks' interior bounds (a Lagrangian split).
+///               LabelingOptions::block_backend, in parallel, each with a halo of its
+///               neighbours' cells; bound: pairwise optimum, dual ascent, Lagrangian split.
 ///               Needs the partition (the SolveLabeling overload that takes one).
 ///  - "clp-barrier": Clp's barrier with its built-in Cholesky; for measurements only (slow).
 ///  - "cbc":     COIN-OR Cbc branch and cut on the integer program itself (cells 0/1): the
@@ -84,12 +84,16 @@ struct LabelingOptions {
   /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg by the block's
   /// size), "clp", "pdhg" or "cbc".
   std::string block_backend = "auto";
-  /// Coordination sweeps of "blocks" (each re-solves, colour by colour, the blocks whose
-  /// neighbours changed); [0, 100]. 0 = the interior solves and the final moves only.
+  /// Sweeps of "blocks" (each solves the blocks whose cells or neighbours changed since their
+  /// last solve); [0, 100]. 0 = the max-flow start and the final moves only.
   int block_sweeps = 2;
   /// "blocks" also solves every block's interior energy for the bound of the Lagrangian split
   /// (block_labeling.h): one more LP per block. Off: the bound is the pairwise optimum.
   bool block_split_bound = false;
+  /// Term hops around a block whose free cells "blocks" solves with it (the others held at their
+  /// labels); [0, 8]. 0 = the block alone, its seams fixed. 1 (default) lets the surface move
+  /// across a seam: on an Andalusian crop 888.9 against 905.1 without (global LP: 878.6).
+  int block_halo = 1;
   /// Passes of dual coordinate ascent on the global LP for the bound of "blocks"
   /// (dual_ascent.h; it stops earlier when a pass gains less than 1e-4); [0, 10000]; 0 = none.
   int block_bound_passes = 50;
@@ -142,12 +146,11 @@ struct LabelingResult {
   std::string lower_bound_source = "none";
   /// LP columns of the band's own LP ("band" backend only; 0 otherwise).
   std::size_t band_lp_columns = 0;
-  /// "blocks" only (0 otherwise): blocks with free cells, colours, terms whose free cells lie in
-  /// more than one block, block solves (interior and coordination), those decided by the
-  /// pairwise certificate (no LP), coordination solves that lowered the energy, coordination
-  /// sweeps run, and the LP columns of the largest block LP.
+  /// "blocks" only (0 otherwise): blocks with free cells, terms whose free cells lie in more than
+  /// one block, block solves (interior solves of the split bound included), those decided by the
+  /// pairwise certificate (no LP), block proposals taken, sweeps run, and the LP columns of the
+  /// largest block LP.
   std::size_t blocks = 0;
-  std::size_t block_colours = 0;
   std::size_t crossing_terms = 0;
   std::size_t block_solves = 0;
   std::size_t block_certified = 0;

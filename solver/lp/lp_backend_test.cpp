@@ -31,24 +31,6 @@ LabelingResult MustSolve(const EnergyInput& e, const std::string& backend, int t
   return std::move(result).value();
 }
 
-// Exhaustive minimum over 0/1 labellings (fixed cells held).
-double BruteForceMinimum(const EnergyInput& e) {
-  std::vector<std::size_t> free;
-  for (std::size_t c = 0; c < e.NumCells(); ++c) {
-    if (e.fixed[CellId(c)] == CellFix::kFree) free.push_back(c);
-  }
-  EXPECT_LE(free.size(), 16u);
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<std::uint8_t> labels(e.NumCells());
-  for (std::uint32_t mask = 0; mask < (1u << free.size()); ++mask) {
-    for (std::size_t c = 0; c < e.NumCells(); ++c) {
-      labels[c] = e.fixed[CellId(c)] == CellFix::kFull ? 1 : 0;
-    }
-    for (std::size_t j = 0; j < free.size(); ++j) labels[free[j]] = (mask >> j) & 1u;
-    best = std::min(best, e.Evaluate(std::span<const std::uint8_t>(labels)));
-  }
-  return best;
-}
 
 // A chain 0-1-...-5: strong evidence for full at cell 1 and 4, pairwise terms between
 // neighbours, the ends fixed empty. Min cut: full on 1..4 costs 2 (two cut pairs) and less than
@@ -82,7 +64,7 @@ TEST_P(EveryBackend, FixedCellsAreRespected) {
   EXPECT_EQ(r.labels[0], 1);
   EXPECT_EQ(r.labels[2], 0);
   EXPECT_EQ(r.labels[5], 0);
-  EXPECT_NEAR(r.labels_objective, BruteForceMinimum(e), kExact);
+  EXPECT_NEAR(r.labels_objective, testing::BruteForceMinimum(e), kExact);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solver, EveryBackend, ::testing::Values("clp", "maxflow", "pdhg", "auto"));
@@ -135,7 +117,7 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
     spec.fixed_fraction = 0.15;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    const double best = BruteForceMinimum(e);
+    const double best = testing::BruteForceMinimum(e);
     const LabelingResult clp = MustSolve(e, "clp");
     const LabelingResult other = MustSolve(e, GetParam());
     // The relaxation bounds the integral optimum from below.
@@ -334,7 +316,7 @@ TEST(SolveLabeling, CbcFindsTheBruteForceOptimum) {
     spec.fixed_fraction = 0.15;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    const double best = BruteForceMinimum(e);
+    const double best = testing::BruteForceMinimum(e);
     const LabelingResult cbc = MustSolve(e, "cbc");
     EXPECT_EQ(cbc.status, "optimal") << seed;
     EXPECT_EQ(cbc.lower_bound_source, "integer optimum") << seed;
@@ -359,7 +341,7 @@ TEST(SolveLabeling, LowerBoundsAreBelowTheIntegralOptimum) {
     spec.num_parity = 6;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    const double best = BruteForceMinimum(e);
+    const double best = testing::BruteForceMinimum(e);
     for (const char* backend : {"clp", "band"}) {
       const LabelingResult r = MustSolve(e, backend);
       EXPECT_NE(r.lower_bound_source, "none") << backend;

@@ -151,6 +151,21 @@ EnergyInput GridEnergy(const GridEnergySpec& spec) {
   return e;
 }
 
+double BruteForceMinimum(const EnergyInput& e) {
+  const std::vector<CellId> free = e.FreeCells();
+  if (free.size() > 20) return std::nan("");
+  double best = INFINITY;
+  std::vector<std::uint8_t> labels(e.NumCells());
+  for (std::uint32_t mask = 0; mask < (1u << free.size()); ++mask) {
+    for (std::size_t c = 0; c < e.NumCells(); ++c) {
+      labels[c] = e.fixed[CellId(c)] == CellFix::kFull ? 1 : 0;
+    }
+    for (std::size_t j = 0; j < free.size(); ++j) labels[free[j].index()] = (mask >> j) & 1u;
+    best = std::min(best, e.Evaluate(std::span<const std::uint8_t>(labels)));
+  }
+  return best;
+}
+
 std::vector<std::uint32_t> GridBlocks(const GridEnergySpec& spec, int block_size) {
   const auto blocks_along = [&](int n) {
     return static_cast<std::uint32_t>((n + block_size - 1) / block_size);

@@ -37,6 +37,9 @@ struct GridEnergySpec {
 };
 [[nodiscard]] EnergyInput GridEnergy(const GridEnergySpec& spec);
 
+/// The exhaustive minimum over 0/1 labellings (fixed cells held); at most 20 free cells.
+[[nodiscard]] double BruteForceMinimum(const EnergyInput& e);
+
 /// Block id per cell of GridEnergy(spec): cubes of `block_size`^3 cells, numbered x fastest.
 [[nodiscard]] std::vector<std::uint32_t> GridBlocks(const GridEnergySpec& spec, int block_size);
 

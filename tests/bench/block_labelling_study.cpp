@@ -76,10 +76,10 @@ double CpuSeconds() {
 
 void PrintHeader() {
   std::printf(
-      "| energy | partition | method | blocks | colours | crossing terms | block solves (LP-free) "
+      "| energy | partition | method | blocks | crossing terms | block solves (LP-free) "
       "| largest block LP | sweeps | labels' energy | lower bound | gap | full cells | wall s | "
       "CPU s |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
 void Print(const Row& row) {
@@ -89,13 +89,12 @@ void Print(const Row& row) {
   const double gap =
       100.0 * (r.labels_objective - r.lower_bound) / std::max(std::abs(r.labels_objective), 1e-12);
   std::printf(
-      "| %s | %s | %s | %zu | %zu | %zu | %zu (%zu) | %zu | %zu | %.4f | %.4f (%s) | "
+      "| %s | %s | %s | %zu | %zu | %zu (%zu) | %zu | %zu | %.4f | %.4f (%s) | "
       "%.2f %% | %zu | %.1f | %.1f |\n",
       row.energy.c_str(),
       row.partition.c_str(),
       r.backend.c_str(),
       r.blocks,
-      r.block_colours,
       r.crossing_terms,
       r.block_solves,
       r.block_certified,
