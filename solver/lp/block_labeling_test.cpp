@@ -66,6 +66,7 @@ TEST(BlockLabeling, BoundsTheOptimumOfRandomEnergiesForRandomPartitions) {
       LabelingOptions options;
       options.backend = "blocks";
       options.block_split_bound = split;
+      options.block_bound_passes = split ? 20 : 0;  // every bound once
       const auto r = SolveLabeling(e, blocks, options, RunContext{});
       ASSERT_TRUE(r) << r.error().ToString();
       ExpectValid(e, *r);

@@ -79,8 +79,11 @@ struct LabelingOptions {
   /// 1 % above the full LP's with 36 % fewer full cells (docs/results.md, "Integral labelling").
   std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   /// "auto" uses the per-block solve above this many LP columns, when a partition of the cells
-  /// into more than one block is given; >= 0. See docs/design/lp_backend.md, "Per-block solve".
-  std::size_t auto_blocks_min_columns = 200000;
+  /// into more than one block is given; >= 0. 1,000,000: where the global pdhg stops finishing
+  /// in minutes (the 1.5M-column Andalusian LP did not converge in 26 min). Below it the global
+  /// LP is better and cheaper: on a 47.5k-column Andalusian crop blocks ended 1.2 % higher in
+  /// energy with 4x pdhg's CPU time (docs/design/lp_backend.md, "Per-block solve").
+  std::size_t auto_blocks_min_columns = 1000000;
   /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg by the block's
   /// size), "clp", "pdhg" or "cbc".
   std::string block_backend = "auto";
@@ -96,7 +99,10 @@ struct LabelingOptions {
   int block_halo = 1;
   /// Passes of dual coordinate ascent on the global LP for the bound of "blocks"
   /// (dual_ascent.h; it stops earlier when a pass gains less than 1e-4); [0, 10000]; 0 = none.
-  int block_bound_passes = 50;
+  /// Off by default: from zero multipliers it climbs slowly on large energies (whole
+  /// Andalusian: 516 after 50 passes, below the pairwise optimum 968; the 47-plane crop: 800,
+  /// above the pairwise 704, LP optimum 877).
+  int block_bound_passes = 0;
   /// Growth steps of the band through shared parity groups (edges and vertices); [0, 16].
   int band_rings = 1;
   /// Wall-time limit of the solve in seconds; 0 = none; >= 0. Exceeding it is a failure.
