@@ -13,6 +13,7 @@
 #include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/scene_box.h"
 #include "engine/pipeline/stage_timer.h"
 
 namespace linesurf::pipeline {
@@ -25,23 +26,6 @@ template <typename T>
 T Take(Expected<T>&& e) {
   if (!e) throw LinesurfException(e.error());
   return std::move(e.value());
-}
-
-Box3 SceneBox(const Scene& scene, double margin) {
-  Box3 box;
-  for (const Segment3& s : scene.segments) {
-    box.Extend(s.p1);
-    box.Extend(s.p2);
-  }
-  for (const Vec3& v : scene.viewpoints) box.Extend(v);
-  const Vec3 extent = box.Extent();
-  const double floor = margin * extent.norm();
-  for (int a = 0; a < 3; ++a) {
-    const double grow = std::max(margin * extent[a], floor);
-    box.min[a] -= grow;
-    box.max[a] += grow;
-  }
-  return box;
 }
 
 /// Observing viewpoints whose cell is labelled full (inside the solid: against the evidence).
