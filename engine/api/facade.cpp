@@ -23,6 +23,17 @@ T ValueOrThrow(Expected<T>&& e) {
   return std::move(e.value());
 }
 
+/// ValueOrThrow for a check of what goes into `path`: the error names the file.
+template <typename T>
+T ValueOrThrowFor(Expected<T>&& e, const std::string& path) {
+  if (!e) {
+    Error named = e.error();
+    named.message = path + ": " + named.message;
+    throw LinesurfException(std::move(named));
+  }
+  return std::move(e.value());
+}
+
 void ThrowIfInvalid(const Status& s) {
   if (!s) throw LinesurfException(s.error());
 }
@@ -120,7 +131,7 @@ Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept {
 
 Status WriteScene(const std::string& path, const SceneData& scene) noexcept {
   return CatchAll("write_scene", [&] {
-    Scene engine_scene = ValueOrThrow(api::ToEngineScene(scene.View(), scene.residuals));
+    Scene engine_scene = ValueOrThrowFor(api::ToEngineScene(scene.View(), scene.residuals), path);
     engine_scene.extra_fields = scene.extra_fields;
     ThrowIfInvalid(io::WriteReferenceJson(engine_scene, path));
   });

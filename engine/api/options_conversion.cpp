@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace linesurf::api {
 namespace {
@@ -117,19 +119,36 @@ io::MeshWriteOptions ToEngineOptions(const MeshWriteOptions& options) {
 }
 
 Status ValidateWeights(const EnergyWeights& weights) {
-  const std::pair<const char*, double> named[] = {
-      {"weights.textural", weights.textural},
-      {"weights.structural", weights.structural},
-      {"weights.visibility", weights.visibility},
-      {"weights.edge", weights.edge},
-      {"weights.corner", weights.corner},
-      {"weights.area", weights.area},
-      {"weights.viewpoint_prior", weights.viewpoint_prior}};
-  for (const auto& [name, w] : named) {
-    if (!std::isfinite(w) || w < 0.0) return Bad(name, "must be finite and >= 0");
+  // The engine's rule (EnergyOptions::Validate, the one the CLI applies), named as the facade's.
+  pipeline::EnergyOptions energy;
+  SetEngineWeights(weights, energy);
+  const Status s = energy.Validate();
+  if (s) return s;
+  const std::pair<std::string_view, const char*> names[] = {
+      {"textural_weight", "weights.textural"},
+      {"structural_weight", "weights.structural"},
+      {"visibility_weight", "weights.visibility"},
+      {"edge_weight", "weights.edge"},
+      {"corner_weight", "weights.corner"},
+      {"area_weight", "weights.area"},
+      {"viewpoint_prior_weight", "weights.viewpoint_prior"}};
+  const std::string& message = s.error().message;
+  for (const auto& [engine_name, name] : names) {
+    if (message.rfind(std::string(engine_name) + " ", 0) == 0) {
+      return Bad(name, message.substr(engine_name.size() + 1));
+    }
   }
-  return {};
+  return Error{ErrorCode::kInvalidOptions, kStage, "weights: " + message};
 }
+
+namespace {
+
+Status ValidateThreads(int num_threads) {
+  if (num_threads >= 0 && num_threads <= kMaxThreads) return {};
+  return Bad("num_threads", "must be in [0, " + std::to_string(kMaxThreads) + "]");
+}
+
+}  // namespace
 
 }  // namespace linesurf::api
 
@@ -138,7 +157,7 @@ inline namespace v1 {
 
 Status DetectOptions::Validate() const noexcept {
   if (Status s = api::ValidateDetection(detection); !s) return s;
-  if (num_threads < 0) return api::Bad("num_threads", "must be >= 0");
+  if (Status s = api::ValidateThreads(num_threads); !s) return s;
   return {};
 }
 
@@ -160,7 +179,7 @@ Status ReconstructOptions::Validate() const noexcept {
   }
   if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
   if (Status s = api::ValidateQuality(quality); !s) return s;
-  if (num_threads < 0) return Bad("num_threads", "must be >= 0");
+  if (Status s = api::ValidateThreads(num_threads); !s) return s;
   return {};
 }
 

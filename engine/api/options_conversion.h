@@ -20,7 +20,8 @@ void SetEngineQuality(const QualityOptions& quality, pipeline::SurfaceQualityOpt
 [[nodiscard]] io::SceneReadOptions ToEngineOptions(const ReadOptions& options);
 [[nodiscard]] io::MeshWriteOptions ToEngineOptions(const MeshWriteOptions& options);
 
-/// @return kInvalidOptions naming the first negative or non-finite weight ("weights.<name>").
+/// @return kInvalidOptions naming the first weight outside the engine's [0, 1e6]
+/// (EnergyOptions::Validate, the rule the CLI applies too) as "weights.<name>".
 [[nodiscard]] Status ValidateWeights(const EnergyWeights& weights);
 
 }  // namespace linesurf::api

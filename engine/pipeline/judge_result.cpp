@@ -48,6 +48,15 @@ void WarnSceneMode(const ResultFacts& f,
 std::string EmptySurfaceCauses(const ResultFacts& f) {
   std::vector<std::string> causes;
   std::ostringstream os;
+  if (f.observing_viewpoints == 0) {
+    os << "no viewpoint observes a segment, so no sight ray carries evidence";
+    if (f.viewpoints_dropped > 0) {
+      os << " (" << f.viewpoints_dropped
+         << " viewpoints dropped by sanitation: non-finite coordinate or beyond the bound)";
+    }
+    causes.push_back(os.str());
+    os.str("");
+  }
   if (f.planes_in_complex < kMinPlanesForSolid) {
     os << "only " << f.planes_in_complex << " plane(s) split the box (" << f.planes
        << " found), a closed surface needs at least " << kMinPlanesForSolid;

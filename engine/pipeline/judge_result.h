@@ -29,6 +29,7 @@ struct ResultFacts {
   std::size_t cells = 0;
   std::size_t full_cells = 0;
   std::size_t observing_viewpoints = 0;
+  std::size_t viewpoints_dropped = 0;        ///< by sanitation (non-finite or beyond the bound)
   std::size_t viewpoints_in_full_cells = 0;  ///< observing viewpoints whose cell is full
   bool has_data_weight = true;               ///< some primitive, visibility or prior weight is > 0
   double sigma = 0.0;

@@ -97,6 +97,7 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       prepared.input_segment = std::move(sane.input_segment);
       prepared.warnings = std::move(sane.warnings);
       stats.input_segments = sane.stats.input_segments;
+      facts.viewpoints_dropped = sane.stats.dropped_bad_viewpoints;
       stage_ctx.ThrowIfCancelled(kStage);
       timer.Start("detect");  // nothing to detect: the report lists the same stages either way
       stats.epsilon = Take(ResolveEpsilon(scene, options.planes, stage_ctx));
@@ -109,6 +110,7 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       prepared.input_segment = std::move(detected.input_segment);
       prepared.warnings = std::move(detected.warnings);
       stats.input_segments = detected.sanitize_stats.input_segments;
+      facts.viewpoints_dropped = detected.sanitize_stats.dropped_bad_viewpoints;
       facts.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
       stats.capped_blocks = static_cast<std::size_t>(detected.detection_stats.capped_blocks);
       facts.detection_epsilon = detected.detection_stats.epsilon;

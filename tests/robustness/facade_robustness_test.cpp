@@ -177,12 +177,13 @@ std::vector<FacadeCase> FacadeCases() {
                 },
                 E::kInvalidInput,
                 {"segment", "beyond"}));
-  add(SceneCase("every_viewpoint_nan",
-                [](SceneData& s) {
-                  for (Vector3& v : s.viewpoints) v[0] = kNan;
-                },
-                E::kDegenerate,
-                {"the surface is empty"}));
+  add(SceneCase(
+      "every_viewpoint_nan",
+      [](SceneData& s) {
+        for (Vector3& v : s.viewpoints) v[0] = kNan;
+      },
+      E::kDegenerate,
+      {"the surface is empty", "no viewpoint observes a segment", "8 viewpoints dropped"}));
   add(SceneCase("observation_segment_out_of_range",
                 [](SceneData& s) {
                   s.observations.push_back({12, 0});
@@ -259,6 +260,13 @@ std::vector<FacadeCase> FacadeCases() {
       "weight_textural_negative",
       [](ReconstructOptions& o) { o.weights.textural = -1.0; },
       "weights.textural"));
+  // One rule with the CLI (--w-edge 1e308 and -j 1000000 are refused there too).
+  add(OptionCase(
+      "weight_edge_1e308", [](ReconstructOptions& o) { o.weights.edge = 1e308; }, "weights.edge"));
+  add(OptionCase(
+      "num_threads_1000000",
+      [](ReconstructOptions& o) { o.num_threads = 1000000; },
+      "num_threads must be in [0, 256]"));
   add(OptionCase(
       "sigma_negative", [](ReconstructOptions& o) { o.sigma = -1.0; }, "sigma"));
   add(OptionCase(
@@ -289,6 +297,10 @@ std::vector<FacadeCase> FacadeCases() {
       "detect_epsilon_zero", [](DetectOptions& o) { o.detection.epsilon = 0.0; }, "epsilon"));
   add(DetectOptionCase(
       "detect_num_threads_negative", [](DetectOptions& o) { o.num_threads = -1; }, "num_threads"));
+  add(DetectOptionCase(
+      "detect_num_threads_1000000",
+      [](DetectOptions& o) { o.num_threads = 1000000; },
+      "num_threads must be in [0, 256]"));
   add({"solve_weight_nan",
        [](const fs::path&) {
          const SceneData scene = CubeData();
@@ -373,7 +385,7 @@ std::vector<FacadeCase> FacadeCases() {
          return OutcomeOf(WriteScene((dir / "s.json").string(), scene));
        },
        E::kInvalidInput,
-       {"observations[95].viewpoint = 9"}});
+       {"{dir}/s.json", "observations[95].viewpoint = 9"}});
   add({"write_scene_onto_a_directory",
        [](const fs::path& dir) {
          fs::create_directory(dir / "d.json");

@@ -2,6 +2,7 @@
 // Shared plumbing of the linesurf subcommands: exit codes, error printing, progress on stderr.
 
 #include "linesurf/error.h"
+#include "linesurf/options.h"
 
 #include "engine/core/run_context.h"
 
@@ -24,9 +25,6 @@ enum ExitCode : int {
   kExitCancelled = 5,
   kExitInternal = 70,
 };
-
-/// Largest --threads accepted.
-constexpr int kMaxThreads = 256;
 
 /// Options every subcommand shares.
 struct CommonOptions {

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   CommonOptions common;
   app.add_flag("-q,--quiet", common.quiet, "No progress or warnings on stderr");
   app.add_option("-j,--threads", common.threads, "Worker threads (0 = all cores)")
-      ->check(Between(0, kMaxThreads));
+      ->check(Between(0, linesurf::kMaxThreads));
 
   std::vector<Command> commands;
   commands.push_back(AddVersionCommand(app, common));

@@ -15,6 +15,9 @@
 namespace linesurf {
 inline namespace v1 {
 
+/// Largest num_threads accepted (the CLI's -j bound too).
+inline constexpr int kMaxThreads = 256;
+
 /// RANSAC plane detection with multiple support (docs/plane_detection.md).
 struct DetectionParameters {
   /// Inlier tolerance eps (> 0). Unset (default): estimated from the data (eps auto,
@@ -56,7 +59,7 @@ struct DetectionParameters {
 /// Options of DetectPlanes.
 struct DetectOptions {
   DetectionParameters detection;
-  /// Worker threads: 0 = automatic, 1 = serial (>= 0). Results do not depend on it.
+  /// Worker threads: 0 = automatic, 1 = serial ([0, kMaxThreads]). Results do not depend on it.
   int num_threads = 0;
   /// Seed of every random stream: same input + options + seed => same planes.
   std::uint64_t seed = 0;
@@ -92,6 +95,7 @@ enum class SolverBackend {
 /// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
 /// Reconstruction::Solve without rebuilding the cell complex.
 struct EnergyWeights {
+  /// Every weight is in [0, 1e6] (beyond, the LP loses all precision).
   /// Textural primitive term (>= 0; paper: 1).
   double textural = 1.0;
   /// Structural primitive term (>= 0; paper: 1, the reference's -cp).
@@ -154,7 +158,7 @@ struct ReconstructOptions {
   QualityOptions quality;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
-  /// Worker threads: 0 = automatic, 1 = serial (>= 0). Results do not depend on it.
+  /// Worker threads: 0 = automatic, 1 = serial ([0, kMaxThreads]). Results do not depend on it.
   int num_threads = 0;
   /// Seed of every random stream: same input + options + seed => same mesh bytes.
   std::uint64_t seed = 0;
