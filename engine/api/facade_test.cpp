@@ -156,7 +156,8 @@ TEST(FacadeOptions, NamesRoundTrip) {
                           SolverBackend::kPdhg,
                           SolverBackend::kBand,
                           SolverBackend::kCbc,
-                          SolverBackend::kClpBarrier}) {
+                          SolverBackend::kClpBarrier,
+                          SolverBackend::kBlocks}) {
     EXPECT_EQ(SolverBackendFromName(SolverBackendName(b)), b);
   }
   for (SceneMode m : {SceneMode::kExterior, SceneMode::kInterior, SceneMode::kAuto}) {

@@ -7,6 +7,7 @@
 #include "engine/core/exception.h"
 #include "engine/detect/estimate_epsilon.h"
 #include "engine/pipeline/block_evidence.h"
+#include "engine/pipeline/centroid_blocks.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_block_surface.h"
@@ -39,6 +40,29 @@ void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, 
     const CellId c = cells[ViewpointId(v)];
     if (c.IsValid() && labels[c.index()] != 0) ++facts.viewpoints_in_full_cells;
   }
+}
+
+/// The partition of the cells that the per-block solve ("blocks", picked by "auto" for large
+/// LPs) works on: the block engine's own blocks, or k-d blocks of a monolithic complex's cells.
+/// Empty when no backend that uses it can run, or ("auto") when the complex fits in one block.
+std::vector<std::uint32_t> SolveBlocks(const PreparedReconstruction& prepared,
+                                       const solver::LabelingOptions& options) {
+  if (options.backend != "auto" && options.backend != "blocks") return {};
+  if (prepared.blocks) {
+    const std::vector<std::size_t> offsets =
+        partition::GlobalCellOffsets(prepared.blocks->complexes);
+    std::vector<std::uint32_t> block_of_cell(offsets.back());
+    for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
+      std::fill(block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b]),
+                block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b + 1]),
+                static_cast<std::uint32_t>(b));
+    }
+    return block_of_cell;
+  }
+  if (options.backend == "auto" && prepared.complex.NumCells() <= options.block_max_cells) {
+    return {};
+  }
+  return CentroidBlocks(prepared.complex, options.block_max_cells);
 }
 
 /// The callbacks of `ctx` with the thread count of `options`: one context for every stage.
@@ -212,8 +236,9 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
                            evidence.warnings.end());
 
     timer.Start("solve");
+    const std::vector<std::uint32_t> block_of_cell = SolveBlocks(prepared, options.solver);
     const solver::LabelingResult labeling =
-        Take(solver::SolveLabeling(evidence.energy, options.solver, stage_ctx));
+        Take(solver::SolveLabeling(evidence.energy, block_of_cell, options.solver, stage_ctx));
 
     timer.Start("extract");
     ExtractOptions extract;

@@ -228,6 +228,7 @@ Status LabelingOptions::Validate() const {
   if (block_sweeps < 0 || block_sweeps > 100) {
     return InvalidOption("block_sweeps: must be in [0, 100]");
   }
+  if (block_max_cells < 1) return InvalidOption("block_max_cells: must be >= 1");
   if (block_halo < 0 || block_halo > 8) return InvalidOption("block_halo: must be in [0, 8]");
   if (block_bound_passes < 0 || block_bound_passes > 10000) {
     return InvalidOption("block_bound_passes: must be in [0, 10000]");

@@ -84,6 +84,10 @@ struct LabelingOptions {
   /// LP is better and cheaper: on a 47.5k-column Andalusian crop blocks ended 1.2 % higher in
   /// energy with 4x pdhg's CPU time (docs/design/lp_backend.md, "Per-block solve").
   std::size_t auto_blocks_min_columns = 1000000;
+  /// Cells per block at most in the partition `reconstruct` makes for "blocks" on a monolithic
+  /// complex (k-d blocks of the cells' centroids, pipeline::CentroidBlocks; the block engine
+  /// uses its own blocks); >= 1. The solver itself takes any partition it is given.
+  std::size_t block_max_cells = 4000;
   /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg by the block's
   /// size), "clp", "pdhg" or "cbc".
   std::string block_backend = "auto";

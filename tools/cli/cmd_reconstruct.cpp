@@ -195,7 +195,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.Add("samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment");
   r.AddFlag("structural-as-textural", e.structural_as_textural,
             "Ablation: structural segments count as two textural ones");
-  r.Add("solver", o.solver.backend, "Labelling backend: clp, maxflow, pdhg, band, cbc or auto");
+  r.Add("solver", o.solver.backend, "Labelling backend: auto, clp, maxflow, pdhg, band, blocks, cbc or clp-barrier");
   r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
   r.AddChoice("engine", o.engine,
               {{"monolithic", pipeline::Engine::kMonolithic}, {"blocks", pipeline::Engine::kBlocks}},

@@ -83,13 +83,14 @@ enum class SceneMode {
 
 /// LP backend of the labelling (docs/solver.md).
 enum class SolverBackend {
-  kAuto,        ///< maxflow when exact, else band / clp / pdhg by model size
+  kAuto,        ///< maxflow when exact, else blocks (large LPs) / clp / pdhg by model size
   kClp,         ///< COIN-OR Clp dual simplex: exact, the reference
   kMaxflow,     ///< exact max-flow; refused (kInvalidOptions) on energies with higher-order terms
   kPdhg,        ///< first-order primal-dual: approximate optimum, fast on large complexes
   kBand,        ///< max-flow, then the LP of the cells near that surface (heuristic)
   kCbc,         ///< COIN-OR Cbc on the integer program (small energies; optional at build time)
   kClpBarrier,  ///< Clp's barrier method (for measurements only: slow)
+  kBlocks,      ///< per-block solve (blocks of cells, in parallel, with halos); large complexes
 };
 
 /// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
@@ -217,7 +218,7 @@ struct MeshWriteOptions {
   return "";
 }
 
-/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" ("" for a value outside
+/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" / "blocks" ("" for a value outside
 /// the enum).
 [[nodiscard]] inline const char* SolverBackendName(SolverBackend backend) noexcept {
   switch (backend) {
@@ -235,6 +236,8 @@ struct MeshWriteOptions {
       return "cbc";
     case SolverBackend::kClpBarrier:
       return "clp-barrier";
+    case SolverBackend::kBlocks:
+      return "blocks";
   }
   return "";
 }
@@ -264,7 +267,7 @@ std::optional<E> EnumFromName(std::string_view name,
 }
 [[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<SolverBackend>(name, 7, &SolverBackendName);
+  return internal::EnumFromName<SolverBackend>(name, 8, &SolverBackendName);
 }
 
 }  // namespace v1
