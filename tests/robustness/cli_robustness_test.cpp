@@ -11,8 +11,8 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <ostream>
 #include <map>
+#include <ostream>
 #include <set>
 #include <string>
 
@@ -22,13 +22,14 @@ namespace linesurf::robustness {
 namespace {
 namespace fs = std::filesystem;
 
-/// Every regular file under `dir` with its content.
+/// Every regular file under `dir` with its content, and every directory (its name ending in
+/// '/', empty content).
 std::map<std::string, std::string> Snapshot(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file()) {
-      files[fs::relative(entry.path(), dir).string()] = testing::Slurp(entry.path());
-    }
+    const std::string name = fs::relative(entry.path(), dir).string();
+    if (entry.is_regular_file()) files[name] = testing::Slurp(entry.path());
+    if (entry.is_directory()) files[name + "/"] = "";
   }
   return files;
 }
@@ -39,13 +40,25 @@ struct CaseRun {
   std::string err;
 };
 
+/// The shell command of a case's run of `linesurf` with stdout to `out` and stderr to `err`.
+std::string CaseCommand(const HostileCase& c, const fs::path& out, const fs::path& err) {
+  const std::string run = testing::ShellQuote((testing::BinDir() / "linesurf").string()) + " " +
+                          c.args + " > " + testing::ShellQuote(out.string()) + " 2> " +
+                          testing::ShellQuote(err.string());
+  const std::string before = c.before.empty() ? "" : c.before + "; ";
+  if (c.during.empty()) return before + run;
+  // Wait (at most 60 s) for the stage's progress line, act, and give linesurf's exit status.
+  return before + "{ " + run + " & pid=$!; i=0; while [ $i -lt 3000 ] && kill -0 $pid 2>/dev/null" +
+         " && ! grep -qF " + testing::ShellQuote(c.during_when) + " " +
+         testing::ShellQuote(err.string()) + "; do i=$((i+1)); sleep 0.02; done; " + c.during +
+         "; wait $pid; }";
+}
+
 CaseRun RunCase(const HostileCase& c, const fs::path& dir, const fs::path& io_dir) {
   const fs::path out = c.stdout_to.empty() ? io_dir / "stdout.txt" : fs::path(c.stdout_to);
   const fs::path err = io_dir / "stderr.txt";
-  const std::string command = "cd " + testing::ShellQuote(dir.string()) + " && " +
-                              testing::ShellQuote((testing::BinDir() / "linesurf").string()) + " " +
-                              c.args + " > " + testing::ShellQuote(out.string()) + " 2> " +
-                              testing::ShellQuote(err.string());
+  const std::string command =
+      "cd " + testing::ShellQuote(dir.string()) + " && " + CaseCommand(c, out, err);
   const int status = std::system(command.c_str());
   CaseRun run;
   // The shell reports a child killed by signal s as exit 128 + s.
@@ -116,10 +129,12 @@ TEST_P(Robustness, KeepsTheContract) {
     ASSERT_NE(now, after.end()) << name << " was removed";
     EXPECT_TRUE(now->second == content) << name << " was modified";
   }
-  // A failed run writes nothing; a successful one exactly the outputs it names.
+  // A failed run writes nothing, not even a directory; a successful one exactly the files it
+  // names (and the directories they need).
   std::set<std::string> created;
   for (const auto& [name, content] : after) {
-    if (!before.count(name)) created.insert(name);
+    const bool directory = name.back() == '/';
+    if (!before.count(name) && !(directory && run.exit_code == 0)) created.insert(name);
   }
   const std::set<std::string> expected =
       run.exit_code == 0 ? std::set<std::string>(c.outputs.begin(), c.outputs.end())
@@ -171,7 +186,7 @@ void RecordVerdict(const std::string& kind, int exit_code) { ++Tally()[kind][exi
 
 std::vector<HostileCase> AllHostileCases() {
   std::vector<HostileCase> all;
-  for (auto generator : {InputCases, OptionCases, OutputPathCases}) {
+  for (auto generator : {InputCases, OptionCases, OutputPathCases, SignalCases}) {
     for (HostileCase& c : generator()) all.push_back(std::move(c));
   }
   return all;

@@ -27,6 +27,12 @@ struct HostileCase {
   std::vector<std::string> outputs;
   /// Where stdout goes ("" = a capture file; e.g. "/dev/full").
   std::string stdout_to;
+  /// Shell commands run before `linesurf` in its shell (e.g. `ulimit -f 0`: every write fails).
+  std::string before = {};
+  /// Shell commands run while `linesurf` runs (its process id in $pid) as soon as stderr shows
+  /// `during_when`, a progress line of the stage to disturb (e.g. `kill -INT $pid`).
+  std::string during = {};
+  std::string during_when = {};
 };
 
 /// Counts one case of `kind` whose contract is `exit_code` (for the library API: the exit code

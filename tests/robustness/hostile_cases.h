@@ -10,6 +10,7 @@ namespace linesurf::robustness {
 std::vector<HostileCase> OutputPathCases();
 std::vector<HostileCase> InputCases();
 std::vector<HostileCase> OptionCases();
+std::vector<HostileCase> SignalCases();
 
 /// Every case of every kind.
 std::vector<HostileCase> AllHostileCases();

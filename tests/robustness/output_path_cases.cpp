@@ -143,6 +143,19 @@ std::vector<HostileCase> OutputPathCases() {
               "synth cube -o taken",
               {"taken", "-o"}),
   };
+  // Every file ends at 512 bytes (file size limit of 1 block, SIGXFSZ ignored, so a write past
+  // it fails with EFBIG; the error message still fits): exit 3, and neither file nor directory
+  // left, not even the directories synth made for its files.
+  HostileCase unwritable{"output path",
+                         "synth_writes_fail",
+                         [](const fs::path&) {},
+                         "synth cube -o new/s",
+                         3,
+                         {"new/s/lines.json"},
+                         {},
+                         ""};
+  unwritable.before = "trap '' XFSZ; ulimit -f 1";
+  cases.push_back(std::move(unwritable));
   // A missing input: exit 3 naming the file, from every subcommand that reads one.
   const std::pair<const char*, const char*> missing[] = {
       {"info", "info missing.json"},

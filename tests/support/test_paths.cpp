@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <unistd.h>
+
 namespace linesurf::testing {
 
 std::optional<std::filesystem::path> SharedDir() {
@@ -39,17 +41,32 @@ std::filesystem::path BinDir() {
   return ec ? std::filesystem::current_path() : self.parent_path();
 }
 
-std::filesystem::path FreshTempDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = "linesurf_test";
+namespace {
+
+std::filesystem::path TempDirOf(const ::testing::TestInfo* info) {
+  // The process id keeps suites run at the same time (two worktrees, two build directories)
+  // out of each other's directories.
+  std::string name = "linesurf_test_" + std::to_string(::getpid());
   if (info != nullptr) name += std::string("_") + info->test_suite_name() + "_" + info->name();
   for (char& c : name) {
     if (c == '/') c = '_';
   }
-  auto dir = std::filesystem::temp_directory_path() / name;
+  return std::filesystem::temp_directory_path() / name;
+}
+
+}  // namespace
+
+std::filesystem::path FreshTempDir() {
+  auto dir = TempDirOf(::testing::UnitTest::GetInstance()->current_test_info());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+void RemoveTempDirOfPassedTest(const ::testing::TestInfo& test) {
+  if (!test.result()->Passed()) return;
+  std::error_code ignored;  // nothing to remove is the common case
+  std::filesystem::remove_all(TempDirOf(&test), ignored);
 }
 
 }  // namespace linesurf::testing

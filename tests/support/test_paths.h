@@ -4,6 +4,10 @@
 #include <filesystem>
 #include <optional>
 
+namespace testing {
+class TestInfo;
+}  // namespace testing
+
 namespace linesurf::testing {
 
 /// ../shared beside the repository (LINESURF_SHARED_DIR), if present.
@@ -17,8 +21,12 @@ std::filesystem::path ExampleHouseInput();
 /// The directory holding the built linesurf executable (LINESURF_BIN_DIR, else the directory
 /// of the running test executable: both are built into bin/).
 std::filesystem::path BinDir();
-/// A fresh, empty temporary directory unique to the running test.
+/// A fresh, empty temporary directory unique to the running test and process
+/// (<tmp>/linesurf_test_<pid>_<suite>_<test>); calling it again in the same test empties it.
 std::filesystem::path FreshTempDir();
+/// Removes the FreshTempDir() of a test that passed (test_main.cpp, after every test); a failed
+/// test's directory is kept to look at.
+void RemoveTempDirOfPassedTest(const ::testing::TestInfo& test);
 
 }  // namespace linesurf::testing
 

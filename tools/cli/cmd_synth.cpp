@@ -46,14 +46,9 @@ int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   if (Status valid = spec.Validate(); !valid) return ReportError(valid.error());
 
   const std::filesystem::path dir(args.out_dir);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) {
-    return ReportError(Error{ErrorCode::kInvalidOptions,
-                             "synth",
-                             dir.string() + ": -o: cannot create directory: " + ec.message()});
-  }
   OutputFiles files("synth");
+  // Removed again unless every file is written: a failed run leaves nothing.
+  if (Status s = files.CreateDirectories("-o", dir); !s) return ReportError(s.error());
   files.AddOutput("-o", dir / "lines.json", kJsonExtensions);
   files.AddOutput("-o", dir / "ground_truth.ply", kMeshExtensions);
   files.AddOutput("-o", dir / "meta.json", kJsonExtensions);

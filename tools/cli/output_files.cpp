@@ -43,7 +43,35 @@ bool SameFile(const fs::path& a, const fs::path& b) {
 
 OutputFiles::OutputFiles(std::string stage) : stage_(std::move(stage)) {}
 
-OutputFiles::~OutputFiles() { RemoveStaged(); }
+OutputFiles::~OutputFiles() {
+  RemoveStaged();
+  if (!committed_) RemoveCreatedDirectories();
+}
+
+Status OutputFiles::CreateDirectories(const std::string& option, const fs::path& dir) {
+  std::vector<fs::path> missing;  // dir and the parents it lacks, deepest first
+  std::error_code ec;
+  for (fs::path p = dir; !p.empty() && !fs::exists(fs::symlink_status(p, ec));
+       p = p.parent_path()) {
+    missing.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
+    if (!fs::create_directory(*p, ec) || ec) {
+      return Error{ErrorCode::kInvalidOptions,
+                   stage_,
+                   dir.string() + ": " + option + ": cannot create directory: " +
+                       (ec ? ec.message() : "it appeared meanwhile")};
+    }
+    created_directories_.push_back(*p);
+  }
+  if (!fs::is_directory(dir, ec)) {
+    return Error{ErrorCode::kInvalidOptions,
+                 stage_,
+                 dir.string() + ": " + option + ": exists and is not a directory"};
+  }
+  return {};
+}
 
 void OutputFiles::AddInput(const fs::path& path) {
   if (!path.empty()) inputs_.push_back(path);
@@ -146,17 +174,54 @@ Status OutputFiles::Write(const fs::path& final_path,
 }
 
 Status OutputFiles::Commit() {
-  for (Output& output : outputs_) {
+  // The file an output replaces is kept under a second name (a hard link, else a copy) until
+  // every rename succeeded, so that a failed rename can put it back.
+  std::vector<fs::path> kept(outputs_.size());
+  const auto drop_kept = [&] {
+    for (const fs::path& old : kept) {
+      std::error_code ignored;
+      if (!old.empty()) fs::remove(old, ignored);
+    }
+  };
+  for (std::size_t i = 0; i < outputs_.size(); ++i) {
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(outputs_[i].path, ec))) continue;
+    fs::path old = outputs_[i].staged;
+    old += ".old";
+    fs::create_hard_link(outputs_[i].path, old, ec);
+    if (ec) fs::copy_file(outputs_[i].path, old, fs::copy_options::overwrite_existing, ec);
+    if (ec) {
+      drop_kept();
+      return Error{ErrorCode::kInvalidInput,
+                   stage_,
+                   outputs_[i].path.string() + ": " + outputs_[i].option +
+                       ": cannot keep the file it replaces until the end: " + ec.message()};
+    }
+    kept[i] = old;
+  }
+  for (std::size_t i = 0; i < outputs_.size(); ++i) {
+    Output& output = outputs_[i];
     std::error_code ec;
     fs::rename(output.staged, output.path, ec);
     if (ec) {
+      for (std::size_t j = 0; j < i; ++j) {  // take back what this run already put in place
+        std::error_code ignored;
+        if (kept[j].empty()) {
+          fs::remove(outputs_[j].path, ignored);
+        } else {
+          fs::rename(kept[j], outputs_[j].path, ignored);
+        }
+      }
+      drop_kept();
       return Error{
           ErrorCode::kInvalidInput,
           stage_,
           output.path.string() + ": " + output.option + ": cannot be written: " + ec.message()};
     }
-    output.staged.clear();
   }
+  for (Output& output : outputs_) output.staged.clear();
+  drop_kept();
+  committed_ = true;
   return {};
 }
 
@@ -170,6 +235,14 @@ void OutputFiles::RemoveStaged() noexcept {
     fs::remove(tmp, ignored);
     output.staged.clear();
   }
+}
+
+void OutputFiles::RemoveCreatedDirectories() noexcept {
+  for (auto dir = created_directories_.rbegin(); dir != created_directories_.rend(); ++dir) {
+    std::error_code ignored;
+    fs::remove(*dir, ignored);  // only when empty: never what someone else put there
+  }
+  created_directories_.clear();
 }
 
 }  // namespace linesurf::cli

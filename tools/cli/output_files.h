@@ -34,6 +34,11 @@ class OutputFiles {
 
   /// A file (or directory) the run reads; an empty path is ignored.
   void AddInput(const std::filesystem::path& path);
+  /// Creates `dir` and its missing parents now (an output directory, e.g. synth's -o DIR); the
+  /// ones created are removed again unless Commit() succeeds, so a failed run leaves nothing.
+  /// kInvalidOptions naming `option` and `dir` when it cannot be created.
+  [[nodiscard]] Status CreateDirectories(const std::string& option,
+                                         const std::filesystem::path& dir);
   /// A file the run writes, named by `option` in messages; `extensions` empty = any name. An
   /// empty path is ignored (optional output not requested).
   void AddOutput(const std::string& option,
@@ -53,7 +58,9 @@ class OutputFiles {
       const std::filesystem::path& final_path,
       const std::function<Status(const std::filesystem::path&)>& write) const;
 
-  /// Renames every staged file onto its destination.
+  /// Renames every staged file onto its destination. If a rename fails (e.g. a directory made
+  /// at an output's path since Prepare), the outputs already renamed are taken back and the
+  /// files they replaced restored: all of the outputs or none.
   [[nodiscard]] Status Commit();
 
  private:
@@ -65,10 +72,13 @@ class OutputFiles {
   };
   [[nodiscard]] Status CheckOutput(const Output& output) const;
   void RemoveStaged() noexcept;
+  void RemoveCreatedDirectories() noexcept;
 
   std::string stage_;
   std::vector<std::filesystem::path> inputs_;
   std::vector<Output> outputs_;
+  std::vector<std::filesystem::path> created_directories_;  ///< parents first
+  bool committed_ = false;
 };
 
 }  // namespace linesurf::cli
