@@ -2,6 +2,7 @@
 
 #include "engine/core/exception.h"
 #include "engine/pipeline/complex_regularisation.h"
+#include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/segment_evidence.h"
 #include "partition/arrangement/cell_locator.h"
 #include "partition/arrangement/seam_regularisation.h"
@@ -309,6 +310,23 @@ void AddSeamRegularisation(const partition::SeamRegularisation& seams,
   }
 }
 
+/// The price of surface on seams that carry no plane (EnergyOptions::open_seam_weight).
+void AddOpenSeamTerms(const BlockComplexes& complexes,
+                      const std::vector<std::size_t>& offsets,
+                      double weight_per_area,
+                      solver::EnergyInput& energy) {
+  if (!(weight_per_area > 0.0)) return;
+  for (std::size_t s = 0; s < complexes.seams.size(); ++s) {
+    if (SeamCarriesPlane(complexes, s)) continue;
+    const partition::SeamFace& face = complexes.seams[s];
+    for (const partition::SeamFacet& facet : face.facets) {
+      energy.AddPair(CellId(offsets[face.lower_block] + facet.lower_cell.index()),
+                     CellId(offsets[face.upper_block] + facet.upper_cell.index()),
+                     weight_per_area * PolygonArea(facet.points));
+    }
+  }
+}
+
 }  // namespace
 
 Expected<EvidenceResult> ComputeBlockEvidence(const BlockComplexes& complexes,
@@ -333,6 +351,8 @@ Expected<EvidenceResult> ComputeBlockEvidence(const BlockComplexes& complexes,
       if (!seams) throw LinesurfException(seams.error());
       AddSeamRegularisation(*seams, offsets, options, result.stats.sigma, result.energy);
     }
+    const double sigma = result.stats.sigma;
+    AddOpenSeamTerms(complexes, offsets, options.open_seam_weight / (sigma * sigma), result.energy);
     ApplyBoundary(complexes, offsets, boundary, result.energy, result.stats);
     result.warnings = EvidenceWarnings(result.stats);
     result.viewpoint_cells = std::move(evidence.viewpoint_cells);

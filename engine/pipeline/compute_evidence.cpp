@@ -80,7 +80,8 @@ Status EnergyOptions::Validate() const {
       {"textural_weight", textural_weight},   {"structural_weight", structural_weight},
       {"visibility_weight", visibility_weight}, {"edge_weight", edge_weight},
       {"corner_weight", corner_weight},       {"area_weight", area_weight},
-      {"viewpoint_prior_weight", viewpoint_prior_weight}};
+      {"viewpoint_prior_weight", viewpoint_prior_weight},
+      {"open_seam_weight", open_seam_weight}};
   for (const auto& [name, w] : weights) {
     if (!(w >= 0.0 && w <= kMaxWeight)) return bad(name, "must be in [0, 1e6]");
   }

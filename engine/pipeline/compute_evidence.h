@@ -53,6 +53,11 @@ struct EnergyOptions {
   double corner_weight = 0.1;
   /// Surface area weight (>= 0), per area / sigma^2. Default 0: lines are too sparse for it.
   double area_weight = 0.0;
+  /// Block engine only (>= 0), per area / sigma^2: surface on a block face that carries no
+  /// plane (a seam between blocks, not a detected surface) costs this much. Such facets let the
+  /// labelling close a solid where support regions end; unpriced, a solid of block faces costs
+  /// nothing there (a box of blocks instead of a house).
+  double open_seam_weight = 1.0;
   /// Viewpoint prior (>= 0): cost per observation when the viewpoint's cell is full. The
   /// reference uses 1.
   double viewpoint_prior_weight = 1.0;

@@ -22,7 +22,8 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
                                                 const SanitizeOptions& sanitize,
                                                 const PlaneDetectionOptions& detect,
                                                 const RunContext& ctx,
-                                                StageTimer* timer) noexcept {
+                                                StageTimer* timer,
+                                                const partition::BlockSizeRule* auto_blocks) noexcept {
   return CatchAll(kStage, [&]() -> DetectedScene {
     DetectedScene out;
     if (timer != nullptr) timer->Start("sanitize");
@@ -37,7 +38,21 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
     ctx.ThrowIfCancelled(kStage);
 
     if (timer != nullptr) timer->Start("detect");
-    PlaneDetectionResult detected = Take(DetectPlanes(out.scene, detect, ctx));
+    PlaneDetectionOptions options = detect;
+    if (auto_blocks != nullptr && options.block_size == 0.0) {
+      const std::span<const Segment3> segments = out.scene.segments.raw();
+      Box3 box;
+      for (const Segment3& s : segments) {
+        box.Extend(s.p1);
+        box.Extend(s.p2);
+      }
+      const partition::BlockSizeChoice choice =
+          Take(partition::ChooseBlockSize(segments, box, *auto_blocks));
+      // One block is the whole scene: keep the monolithic detection (its exact result).
+      if (choice.halvings > 0) options.block_size = choice.block_size;
+    }
+    out.detection_block_size = options.block_size;
+    PlaneDetectionResult detected = Take(DetectPlanes(out.scene, options, ctx));
     out.scene.planes = std::move(detected.planes);
     out.scene.memberships = std::move(detected.memberships);
     out.support = std::move(detected.support);

@@ -9,6 +9,7 @@
 #include "engine/detect/detect_planes.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/stage_timer.h"
+#include "partition/voxel/block_size_rule.h"
 
 #include <cstddef>
 #include <string>
@@ -30,15 +31,22 @@ struct DetectedScene {
   IdVector<PlaneId, PlaneSupport> support;
   /// How many planes the input carried (ignored).
   std::size_t given_planes = 0;
+  /// Side of the detection blocks used (0 = the whole scene at once).
+  double detection_block_size = 0.0;
 };
 
 /// @brief Drops the input's planes and memberships, sanitises, and detects planes.
 /// @param timer when given, times the stages "sanitize" and "detect".
+/// @param auto_blocks when given and detect.block_size is 0, detection runs on cubes of the side
+/// this rule picks for the sanitised segments (by segments alone), or on the whole scene when the
+/// rule picks one block (then the result is the monolithic detection's).
 /// @return the errors of SanitizeScene and DetectPlanes (kCancelled between the two).
-[[nodiscard]] Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
-                                                              const SanitizeOptions& sanitize,
-                                                              const PlaneDetectionOptions& detect,
-                                                              const RunContext& ctx,
-                                                              StageTimer* timer = nullptr) noexcept;
+[[nodiscard]] Expected<DetectedScene> SanitizeAndDetectPlanes(
+    Scene scene,
+    const SanitizeOptions& sanitize,
+    const PlaneDetectionOptions& detect,
+    const RunContext& ctx,
+    StageTimer* timer = nullptr,
+    const partition::BlockSizeRule* auto_blocks = nullptr) noexcept;
 
 }  // namespace linesurf::pipeline

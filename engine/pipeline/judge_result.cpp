@@ -13,6 +13,9 @@ constexpr std::size_t kMinPlanesForSolid = 4;
 constexpr double kNegligibleSigmaFactor = 1e3;
 /// Beyond this fraction of the scene diagonal, the detection tolerance eps swallows the scene.
 constexpr double kHugeEpsilonFraction = 0.1;
+/// Above this share of its area on seams without a plane, a block-engine surface is mostly the
+/// partition's block faces, not detected planes (a box of blocks instead of the scene).
+constexpr double kOpenSeamShare = 0.05;
 
 std::string ModeName(bool interior) { return interior ? "interior" : "exterior"; }
 
@@ -111,6 +114,15 @@ ResultJudgement JudgeResult(const ResultFacts& f) {
     std::ostringstream os;
     os << f.viewpoints_in_full_cells << " of " << f.observing_viewpoints
        << " observing viewpoints lie inside the solid (their cell is full)";
+    j.warnings.push_back(os.str());
+  }
+  if (f.mesh_area > 0.0 && f.open_seam_area > kOpenSeamShare * f.mesh_area) {
+    std::ostringstream os;
+    os.precision(3);
+    os << 100.0 * f.open_seam_area / f.mesh_area << " % of the surface area (" << f.open_seam_faces
+       << " faces) lies on block faces that carry no detected plane: the solid is closed by the "
+          "block partition, not by the data (planes missing, or --block-size too small for the "
+          "scene; try the automatic block size or a larger --block-margin)";
     j.warnings.push_back(os.str());
   }
   std::ostringstream os;

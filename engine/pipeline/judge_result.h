@@ -38,6 +38,10 @@ struct ResultFacts {
   std::size_t grazing_samples = 0;  ///< samples skipped, viewpoint in the segment's plane
   IndexTopology topology;
   std::size_t mesh_faces = 0;
+  /// Blocks engine: surface area on seams that carry no plane (open_seams.h), and the mesh's.
+  double open_seam_area = 0.0;
+  double mesh_area = 0.0;
+  std::size_t open_seam_faces = 0;
 };
 
 struct ResultJudgement {

@@ -14,6 +14,7 @@
 #include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/scene_box.h"
 #include "engine/pipeline/stage_timer.h"
 
@@ -87,6 +88,12 @@ Status ReconstructOptions::Validate() const {
   if (Status s = solver.Validate(); !s) return s;
   if (Status s = complex.Validate(); !s) return s;
   if (Status s = blocks.Validate(); !s) return s;
+  if (Status s = detection_blocks.Validate(); !s) return s;
+  if (engine == Engine::kMonolithic && blocks.block_size != 0.0) {
+    return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
+                 "blocks.block_size applies to the blocks engine only (per-block detection: "
+                 "planes.block_size)"};
+  }
   if (Status s = quality.Validate(); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
@@ -128,8 +135,11 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     } else {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
+      const bool blocks = options.engine == Engine::kBlocks;
       DetectedScene detected =
-          Take(SanitizeAndDetectPlanes(input, options.sanitize, detect, stage_ctx, &timer));
+          Take(SanitizeAndDetectPlanes(input, options.sanitize, detect, stage_ctx, &timer,
+                                       blocks ? &options.detection_blocks : nullptr));
+      stats.detection_block_size = detected.detection_block_size;
       scene = std::move(detected.scene);
       prepared.input_segment = std::move(detected.input_segment);
       prepared.warnings = std::move(detected.warnings);
@@ -153,7 +163,6 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     if (options.engine == Engine::kBlocks) {
       BlockPartitionOptions partition_options = options.blocks;
       partition_options.complex = options.complex;
-      partition_options.block_size = options.planes.block_size;
       prepared.blocks = Take(BuildBlockPartition(scene, box, partition_options, stage_ctx));
       const partition::BlockComplexes& bc = prepared.blocks->complexes;
       prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
@@ -247,6 +256,11 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     if (prepared.blocks) {
       BlockExtractResult surface =
           Take(ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));
+      const OpenSeamSurface open =
+          MeasureOpenSeamSurface(prepared.blocks->complexes, surface.mesh, surface.face_facet);
+      facts.open_seam_area = open.area;
+      facts.open_seam_faces = open.faces;
+      facts.mesh_area = open.total_area;
       result.mesh = std::move(surface.mesh);
       stats.split_vertices = surface.stats.split_vertices;
     } else {

@@ -71,6 +71,7 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::Reconstru
                  {"lp_nonzeros", s.lp_nonzeros}};
   j["engine"] = s.engine;
   j["block_size"] = s.block_size;
+  j["detection_block_size"] = s.detection_block_size;
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;
   j["sigma"] = s.sigma;
@@ -190,6 +191,9 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.Add("w-edge", e.edge_weight, "Edge regularisation weight");
   r.Add("w-corner", e.corner_weight, "Corner regularisation weight");
   r.Add("w-area", e.area_weight, "Area weight");
+  r.Add("w-open-seam",
+        e.open_seam_weight,
+        "Block engine: weight of surface on block faces that carry no plane, per area / sigma^2");
   r.Add("w-prior", e.viewpoint_prior_weight, "Viewpoint prior weight");
   r.Add("sigma", e.sigma, "Scale sigma, scene units (default: median length)");
   r.Add("samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment");
@@ -201,6 +205,11 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
               {{"monolithic", pipeline::Engine::kMonolithic}, {"blocks", pipeline::Engine::kBlocks}},
               "Cell complex: one arrangement of the scene box, or per-block arrangements "
               "(blocks of --block-size, automatic when 0)");
+  r.Add("block-size",
+        o.blocks.block_size,
+        "Block engine: side of the base blocks, scene units (0 = automatic; --engine blocks "
+        "only)")
+      ->check(AtLeast(0.0));
   r.Add("block-margin", o.blocks.support.margin_blocks,
         "Blocks a plane's support region is dilated by (--engine blocks)")
       ->check(Between(0.0, 64.0));
@@ -214,7 +223,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
             o.measure_quality,
             "Figures without ground truth in the report (data fit, visibility, components; "
             "--quality=false skips them)");
-  RegisterDetectionOptions(r, o.planes);
+  RegisterDetectionOptions(r, o.planes, "detect-");
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;
 }

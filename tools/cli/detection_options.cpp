@@ -4,7 +4,9 @@
 
 namespace linesurf::cli {
 
-void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& options) {
+void RegisterDetectionOptions(OptionRegistry& registry,
+                              PlaneDetectionOptions& options,
+                              const std::string& block_prefix) {
   registry
       .Add("epsilon",
            options.epsilon,
@@ -21,7 +23,9 @@ void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& o
   registry.Add("iterations", options.iterations, "Max candidate pairs per plane")
       ->check(Above(0.0));
   registry
-      .Add("max-planes", options.max_planes, "Max number of planes (per block with --block-size)")
+      .Add("max-planes",
+           options.max_planes,
+           "Max number of planes (per block with --" + block_prefix + "block-size)")
       ->check(Above(0.0));
   registry.Add("min-support", options.min_support, "Min inlier segments per plane");
   registry
@@ -30,14 +34,18 @@ void RegisterDetectionOptions(OptionRegistry& registry, PlaneDetectionOptions& o
            "Segments on one line within this x eps are detected as one (0 = off)")
       ->check(Between(0.0, 0.5));
   registry
-      .Add("block-size",
+      .Add(block_prefix + "block-size",
            options.block_size,
-           "Per-block detection: cube side, scene units (0 = whole scene at once)")
+           "Per-block detection: cube side, scene units (0 = whole scene at once" +
+               std::string(block_prefix.empty() ? ")" : "; automatic with --engine blocks)"))
       ->check(AtLeast(0.0));
-  registry.Add("block-halo", options.block_halo, "Halo of a block, fraction of its side")
+  registry
+      .Add(block_prefix + "block-halo",
+           options.block_halo,
+           "Halo of a detection block, fraction of its side")
       ->check(Between(0.0, 0.49));
   registry
-      .Add("block-max-segments",
+      .Add(block_prefix + "block-max-segments",
            options.block_max_segments,
            "Split a block with more lines than this into 8, recursively (0 = never)")
       ->check(AtLeast(0.0));

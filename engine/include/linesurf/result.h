@@ -91,6 +91,7 @@ struct ReconstructStats {
   std::size_t planes_in_complex = 0;                  ///< planes that split the box
   std::string engine;           ///< the cell complex: "monolithic" or "blocks"
   double block_size = 0.0;      ///< base block side (blocks engine; 0 for monolithic)
+  double detection_block_size = 0.0;  ///< detection cube side (0 = the whole scene at once)
   std::size_t blocks = 0;       ///< base blocks (1 for monolithic)
   std::size_t seam_facets = 0;  ///< facets of the seam overlay (blocks engine)
   std::size_t cells = 0;
