@@ -2,6 +2,8 @@
 
 #include "engine/core/rng.h"
 #include "engine/pipeline/block_partition.h"
+#include "engine/pipeline/open_seams.h"
+#include "engine/pipeline/segment_evidence.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
 #include "partition/arrangement/cell_locator.h"
@@ -220,6 +222,7 @@ TEST(ComputeBlockEvidence, ARayAcrossASeamCrossesItsSeamFacet) {
   EnergyOptions o = Options();
   o.visibility_weight = 1.0;
   o.sigma = 1.0;
+  o.open_seam_weight = 0.0;  // rays only (no plane lies on any seam here)
   auto r = ComputeBlockEvidence(*cx, scene, o, BoundaryMode::kNone, {});
   ASSERT_TRUE(r) << r.error().ToString();
   // Each block is one cell (global id = block index); the viewpoint is in block (0, 1, 1), the
@@ -231,6 +234,57 @@ TEST(ComputeBlockEvidence, ARayAcrossASeamCrossesItsSeamFacet) {
   EXPECT_EQ(r->energy.pairs[0].a, from);
   EXPECT_EQ(r->energy.pairs[0].b, to);
   EXPECT_NEAR(r->energy.pairs[0].weight, 0.6, 1e-9);
+}
+
+// Surface on a seam without a plane is priced by area (open_seam_weight / sigma^2); a seam with a
+// plane on it is not.
+TEST(ComputeBlockEvidence, OpenSeamsArePricedByAreaAndSeamsWithAPlaneAreNot) {
+  Scene scene;
+  scene.viewpoints.push_back(Vec3(-1.5, 0.2, 0.1));
+  scene.segments.push_back({Vec3(1.5, 0.0, 0.05), Vec3(1.5, 0.6, 0.05)});
+  scene.observations.AddRow(std::vector<ViewpointId>{ViewpointId(std::size_t{0})});
+  Plane3 wall;
+  wall.point = Vec3(0.0, 0.0, 0.0);  // x = 0: the x face of the 2.0 grid from -2
+  wall.normal = Vec3::UnitX();
+  const auto grid = partition::BlockGrid::Create(kBox, 2.0);
+  ASSERT_TRUE(grid);
+  EnergyOptions o = Options();
+  o.visibility_weight = 0.0;
+  o.edge_weight = 0.0;
+  o.corner_weight = 0.0;
+  o.sigma = 0.5;
+  o.open_seam_weight = 3.0;
+  for (const bool with_wall : {false, true}) {
+    SCOPED_TRACE(with_wall);
+    std::vector<Plane3> planes;
+    std::vector<std::vector<std::int64_t>> regions;
+    if (with_wall) {
+      planes.push_back(wall);
+      std::vector<std::int64_t> all(static_cast<std::size_t>(grid->NumBaseBlocks()));
+      std::iota(all.begin(), all.end(), std::int64_t{0});
+      regions.push_back(all);
+    }
+    auto cx = partition::BuildBlockComplexes(
+        *grid, planes, partition::RegionsFromBlockLists(regions), {}, {});
+    ASSERT_TRUE(cx);
+    double open_area = 0.0;
+    std::size_t open_facets = 0;
+    for (std::size_t f = 0; f < cx->seams.size(); ++f) {
+      EXPECT_EQ(SeamCarriesPlane(*cx, f), with_wall && cx->seams[f].axis == 0);
+      if (SeamCarriesPlane(*cx, f)) continue;
+      for (const partition::SeamFacet& facet : cx->seams[f].facets) {
+        open_area += PolygonArea(facet.points);
+        ++open_facets;
+      }
+    }
+    auto r = ComputeBlockEvidence(*cx, scene, o, BoundaryMode::kNone, {});
+    ASSERT_TRUE(r) << r.error().ToString();
+    EXPECT_EQ(r->energy.NumPairs(), open_facets);
+    double total = 0.0;
+    for (const auto& pair : r->energy.pairs) total += pair.weight;
+    EXPECT_NEAR(total, 3.0 * open_area / 0.25, 1e-9);
+    EXPECT_GT(open_facets, with_wall ? 10u : 16u);
+  }
 }
 
 // A ray through a block edge (and one along a block face) walks a chain of neighbours.
@@ -250,6 +304,7 @@ TEST(ComputeBlockEvidence, RaysThroughBlockEdgesAndAlongFacesCrossSeams) {
   EnergyOptions o = Options();
   o.sigma = 1.0;
   o.max_samples_per_segment = 1;
+  o.open_seam_weight = 0.0;  // rays only
   auto r = ComputeBlockEvidence(*cx, scene, o, BoundaryMode::kNone, {});
   ASSERT_TRUE(r) << r.error().ToString();
   // First ray: (0,0,1) -> (1,0,1) -> (1,1,1) (x first on the tie); second ray ends on the face

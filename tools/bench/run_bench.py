@@ -5,7 +5,10 @@ For every scene of a manifest: generate the input with `linesurf synth` (synthet
 seed) or take it from ../shared (real scenes, skipped with a message when absent), run
 `linesurf reconstruct ... --report`, then `linesurf evaluate ... --json` against the ground truth
 when there is one. Prints a table per scene (per-stage times, peak memory, LP size, quality at
-5 cm, mesh checks), appends one JSON line per scene (with git commit and machine) to --output,
+5 cm, mesh checks) and at the end one Markdown table of all scenes (with the time ratios along a
+`series`, e.g. cities of 10, 100 and 1,000 buildings, and the speedup of scenes run with several
+thread counts: `"threads": [1, 2]` in the manifest reconstructs once per count, in this one run,
+and the record keeps the last), appends one JSON line per scene (with git commit and machine) to --output,
 and compares with the committed baseline: a scene is flagged when it is more than 10 % slower
 (total, or a stage that takes at least --min-stage-seconds) or loses any quality (precision or
 completeness at any threshold lower, or a mesh check that held no longer holds).
@@ -158,16 +161,28 @@ def run_scene(scene, args, manifest, workdir, shared):
     record["options"] = scene.get("reconstruct", [])
     mesh_path = scene_dir / "result.ply"
     report_path = scene_dir / "report.json"
-    best = None
-    for _ in range(args.repeat):
-        command = linesurf + ["reconstruct", str(input_path), "-o", str(mesh_path),
-                              "--report", str(report_path)] + scene.get("reconstruct", [])
-        code, wall, rss = run_timed(command, scene_dir / "reconstruct.log")
-        if code != 0:
-            return dict(record, status="failed",
-                        error="reconstruct exit %d: %s" % (code, tail(scene_dir / "reconstruct.log")))
-        if best is None or wall < best[0]:
-            best = (wall, rss, json.load(open(report_path)))
+    thread_counts = scene.get("threads", [args.threads])
+    walls = {}
+    for threads in thread_counts:
+        runner = [str(args.linesurf)] + (["-j", str(threads)] if threads else []) + ["-q"]
+        best = None
+        for _ in range(args.repeat):
+            command = runner + ["reconstruct", str(input_path), "-o", str(mesh_path),
+                                "--report", str(report_path)] + scene.get("reconstruct", [])
+            code, wall, rss = run_timed(command, scene_dir / "reconstruct.log")
+            if code != 0:
+                return dict(record, status="failed",
+                            error="reconstruct -j %d exit %d: %s" % (
+                                threads, code, tail(scene_dir / "reconstruct.log")))
+            if best is None or wall < best[0]:
+                best = (wall, rss, json.load(open(report_path)))
+        walls[threads] = round(best[0], 3)
+    if len(walls) > 1:
+        record["wall_seconds_by_threads"] = {str(t): w for t, w in walls.items()}
+        first, last = thread_counts[0], thread_counts[-1]
+        record["speedup"] = round(walls[first] / walls[last], 3) if walls[last] > 0 else None
+    record["series"] = scene.get("series")
+    record["series_size"] = scene.get("synth", {}).get("size")
     wall, rss, report = best
     record["wall_seconds"] = round(wall, 3)
     record["peak_rss_mb"] = round(rss, 1)
@@ -252,6 +267,40 @@ def print_table(record, regressions):
         "yes" if mesh["self_intersecting"] else "no"))
     for line in regressions:
         print("  REGRESSION: " + line)
+
+
+def print_summary(records):
+    """One Markdown table of every scene run; along a series, the size and time ratios to the
+    previous scene of the series."""
+    print("\n| scene | segments | planes | cells | wall s | peak RSS MB | precision 5 cm | completeness 5 cm "
+          "| closed / 2-manifold / oriented / self-intersecting | size x | time x | speedup |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    previous = {}
+    for r in records:
+        if r["status"] != "ok":
+            print("| %s | %s |" % (r["scene"], r["status"]) + " |" * 10)
+            continue
+        size_ratio = time_ratio = None
+        series = r.get("series")
+        if series and series in previous:
+            before = previous[series]
+            if before.get("series_size") and r.get("series_size"):
+                size_ratio = r["series_size"] / before["series_size"]
+            time_ratio = r["wall_seconds"] / before["wall_seconds"]
+        if series:
+            previous[series] = r
+        quality, mesh = r.get("quality"), r["mesh"]
+        speedup = r.get("speedup")
+        by_threads = r.get("wall_seconds_by_threads")
+        print("| %s | %s | %s | %s | %.1f | %.0f | %s | %s | %s | %s | %s | %s |" % (
+            r["scene"], fmt(r.get("segments"), "%d"), fmt(r.get("planes"), "%d"),
+            fmt(r.get("cells"), "%d"), r["wall_seconds"], r["peak_rss_mb"],
+            fmt(None if not quality else 100 * share_at(quality, "precision")),
+            fmt(None if not quality else 100 * share_at(quality, "completeness")),
+            " / ".join("yes" if mesh[k] else "no" for k in ("closed", "two_manifold", "oriented", "self_intersecting")),
+            fmt(size_ratio, "%.0f"), fmt(time_ratio, "%.2f"),
+            "-" if speedup is None else "%.2f (%s)" % (
+                speedup, ", ".join("-j %s %.1f s" % kv for kv in by_threads.items()))))
 
 
 def compare(record, base, min_stage_seconds):
@@ -356,6 +405,7 @@ def main():
         records.append(record)
         with open(args.output, "a") as out:
             out.write(json.dumps(record, sort_keys=True) + "\n")
+    print_summary(records)
     print("\n%d scene(s) in %.0f s: %d failed, %d regressed, %d skipped" % (
         len(records), time.monotonic() - start, failed, regressed,
         sum(r["status"] == "skipped" for r in records)))
