@@ -1,5 +1,6 @@
 #include "engine/detect/detect_planes.h"
 #include "engine/detect/estimate_epsilon.h"
+#include "engine/detect/support_clusters.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -38,6 +39,12 @@ constexpr std::size_t kCandidateGrain = 4;
 constexpr double kMinSampleLengthOverEps = 1e-6;
 /// A fit whose two largest spreads differ by more than this ratio is collinear: keep the hint.
 constexpr double kCollinearEigenRatio = 1e-12;
+/// A piece of a plane's support is judged on its own fit only when its endpoints spread at least
+/// this many eps across their main direction (so that its tilt is not noise)...
+constexpr double kPieceMinWidthOverEps = 10.0;
+/// ... and it disagrees with the plane when its own fit is farther than this many eps from the
+/// plane at one of its endpoints.
+constexpr double kPieceDisagreementOverEps = 0.5;
 /// Safety factors of the cheap pair rejections in PlaneFromPair (squared quantities): far from
 /// 1 compared with rounding, close enough to 1 to reject nearly every invalid pair.
 constexpr double kCheapRejectShrink = 1.0 - 1e-9;
@@ -70,6 +77,7 @@ Status PlaneDetectionOptions::Validate() const {
   if (!(confidence > 0.0 && confidence < 1.0)) return Invalid("confidence", "in (0, 1)");
   if (max_planes < 1) return Invalid("max_planes", ">= 1");
   if (min_support < 2) return Invalid("min_support", ">= 2");
+  if (!(support_gap >= 0.0 && support_gap <= 1000.0)) return Invalid("support_gap", "in [0, 1000]");
   if (max_failed_draws < 1) return Invalid("max_failed_draws", ">= 1");
   if (max_draws_per_candidate < 1) return Invalid("max_draws_per_candidate", ">= 1");
   if (!(min_pair_angle_deg > 0.0 && min_pair_angle_deg < 90.0)) {
@@ -96,7 +104,8 @@ Status PlaneDetectionOptions::Validate() const {
 namespace detect {
 
 Plane3 FitPlane(std::span<const Segment3> segments, std::span<const SegmentId> ids,
-                const Vec3& hint) {
+                const Vec3& hint, double* width) {
+  if (width != nullptr) *width = 0.0;
   double total = 0.0;
   Vec3 centroid = Vec3::Zero();
   for (const SegmentId s : ids) {
@@ -120,6 +129,7 @@ Plane3 FitPlane(std::span<const Segment3> segments, std::span<const SegmentId> i
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const Vec3 values = eig.eigenvalues();  // ascending
+  if (width != nullptr) *width = std::sqrt(std::max(0.0, values[1]) / total);
   if (values[1] <= kCollinearEigenRatio * values[2]) return plane;  // collinear: keep hint
   Vec3 normal = eig.eigenvectors().col(0).normalized();
   if (normal.dot(hint) < 0.0) normal = -normal;
@@ -128,6 +138,16 @@ Plane3 FitPlane(std::span<const Segment3> segments, std::span<const SegmentId> i
 }
 
 namespace {
+
+double MedianLength(std::span<const Segment3> segments) {
+  std::vector<double> lengths;
+  lengths.reserve(segments.size());
+  for (const Segment3& seg : segments) lengths.push_back(seg.Length());
+  if (lengths.empty()) return 0.0;
+  const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+  std::nth_element(lengths.begin(), middle, lengths.end());
+  return *middle;
+}
 
 struct CandidateResult {
   bool valid = false;
@@ -154,7 +174,8 @@ class Detector {
         sin_pair_(std::sin(DegToRad(options.min_pair_angle_deg))),
         sin_crease_(std::sin(DegToRad(options.min_crease_angle_deg))),
         memberships_(segments_.size()),
-        bvh_(segments_) {
+        bvh_(segments_),
+        support_gap_(options.support_gap * MedianLength(segments)) {
     direction_.resize(segments_.size(), Vec3::Zero());
     midpoint_.reserve(segments_.size());
     for (const Segment3& seg : segments_) midpoint_.push_back(seg.Midpoint());
@@ -191,6 +212,7 @@ class Detector {
         inliers = std::move(again);
         if (stable) break;
       }
+      KeepOnePiece(plane, inliers);
       if (inliers.size() < static_cast<std::size_t>(options_.min_support)) break;
       const PlaneId id(planes_.size());
       for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
@@ -202,6 +224,49 @@ class Detector {
   std::vector<detect::SupportedPlane>& planes() { return planes_; }
 
  private:
+  /// When the support of `plane` falls into pieces farther apart than the support gap that
+  /// disagree about the plane (detect::PiecesDisagree), keeps the largest piece: refit on it,
+  /// re-collect, and keep the piece of the new inliers that holds most of the old one, until
+  /// stable. The other pieces' segments stay free for planes of their own. A largest piece under
+  /// min_support leaves the plane as it was.
+  void KeepOnePiece(Plane3& plane, std::vector<SegmentId>& inliers) const {
+    if (support_gap_ <= 0.0) return;
+    const auto min_lines = static_cast<std::size_t>(options_.min_support);
+    std::vector<std::vector<SegmentId>> pieces =
+        detect::SupportClusters(segments_, inliers, support_gap_);
+    if (pieces.size() < 2 || pieces[0].size() < min_lines ||
+        !detect::PiecesDisagree(segments_, pieces, plane, min_lines,
+                                kPieceMinWidthOverEps * epsilon_,
+                                kPieceDisagreementOverEps * epsilon_)) {
+      return;
+    }
+    std::vector<SegmentId> kept = std::move(pieces[0]);
+    Plane3 fitted = detect::FitPlane(segments_, kept, plane.normal);
+    for (std::int32_t it = 0; it < options_.max_refit_iterations; ++it) {
+      const Plane3 refit = detect::FitPlane(segments_, kept, fitted.normal);
+      const std::vector<SegmentId> again = Collect(refit);
+      std::vector<SegmentId> best;
+      std::size_t best_overlap = 0;
+      for (std::vector<SegmentId>& piece :
+           detect::SupportClusters(segments_, again, support_gap_)) {
+        std::vector<SegmentId> common;
+        std::set_intersection(piece.begin(), piece.end(), kept.begin(), kept.end(),
+                              std::back_inserter(common));
+        if (common.size() > best_overlap) {
+          best_overlap = common.size();
+          best = std::move(piece);
+        }
+      }
+      if (best.size() < kept.size()) break;  // the refit lost support: keep the previous
+      const bool stable = best == kept;
+      fitted = refit;
+      kept = std::move(best);
+      if (stable) break;
+    }
+    plane = fitted;
+    inliers = std::move(kept);
+  }
+
   bool Sampleable(SegmentId s) const {
     const PlaneMembership& m = memberships_[s.index()];
     if (!sampleable_[s.index()] || m.count >= 2) return false;
@@ -419,6 +484,7 @@ class Detector {
   std::vector<Vec3> midpoint_;
   std::vector<bool> sampleable_;
   detect::SegmentBvh bvh_;
+  double support_gap_;  ///< scene units; 0 = a plane's support may come in pieces
   std::vector<detect::SupportedPlane> planes_;
 };
 

@@ -54,6 +54,13 @@ struct PlaneDetectionOptions {
   std::int32_t max_planes = 160;
   /// A plane needs at least this many inlier segments (>= 2; the reference code uses 3).
   std::int32_t min_support = 3;
+  /// One plane, one piece: when a plane's inliers fall into pieces more than this many median
+  /// line lengths apart and a piece fitted on its own disagrees with the plane (by more than
+  /// eps / 2 at one of its endpoints), the plane keeps only its largest piece (refitted) and the
+  /// others stay free. Stops a plane tilted across two parallel roofs or walls of different
+  /// buildings a few eps apart, which has more inliers than either. [0, 1000]; 0 = off (the
+  /// paper's method). Not in the paper.
+  double support_gap = 8.0;
   /// Bound on failed pair draws (invalid pairs) while searching one plane (>= 1). Replaces the
   /// reference's N_iter x 1e5 draws of its final, failing extraction.
   std::int64_t max_failed_draws = 200000;

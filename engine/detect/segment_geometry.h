@@ -48,7 +48,9 @@ inline double SegmentLineDistance(const Segment3& s, const CreaseLine& l, Segmen
 
 /// Length-weighted least-squares plane through the endpoints of `ids` (serial, in the given
 /// order, so the result is deterministic). The normal keeps the sign of `hint` when possible.
+/// `width`, when given, receives the RMS spread of the endpoints across their main direction
+/// within the plane (0 for collinear ones): how well the fit's tilt is determined.
 Plane3 FitPlane(std::span<const Segment3> segments, std::span<const SegmentId> ids,
-                const Vec3& hint);
+                const Vec3& hint, double* width = nullptr);
 
 }  // namespace linesurf::detect

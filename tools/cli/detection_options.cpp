@@ -29,6 +29,12 @@ void RegisterDetectionOptions(OptionRegistry& registry,
       ->check(Above(0.0));
   registry.Add("min-support", options.min_support, "Min inlier segments per plane");
   registry
+      .Add("support-gap",
+           options.support_gap,
+           "A plane whose support comes in pieces this many median line lengths apart that "
+           "disagree about it keeps its largest piece (0 = off)")
+      ->check(Between(0.0, 1000.0));
+  registry
       .Add("collinear-tolerance",
            options.collinear_tolerance,
            "Segments on one line within this x eps are detected as one (0 = off)")
