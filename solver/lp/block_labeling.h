@@ -7,7 +7,8 @@
 //  2. Sweeps of block solves: every block with a halo of `block_halo` term hops of its
 //     neighbours' free cells is solved on its sub-energy (sub_energy.h: every other cell held at
 //     its current label), all blocks from the same labels, in parallel, by SolveLabeling with the
-//     inner backend (block_backend; "auto": maxflow, clp or pdhg by the block's size), after an
+//     inner backend (block_backend; "auto": maxflow, clp or pdhg by the block's size; its local
+//     search and group moves, no exact windows: those run once, in step 3), after an
 //     exact shortcut: when the max-flow labels of the sub-energy's unary and pairwise terms leave
 //     no structural or parity energy, they are its integral optimum and no LP is solved. Then, in
 //     block order, each block's new labels (halo included) are taken when, given the labels as

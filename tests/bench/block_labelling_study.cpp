@@ -4,14 +4,16 @@
 //       solver::testing::GridEnergy n^3 for each n of SIZES, cut into cubes of each edge of
 //       EDGES (comma lists); the global solve with the backend `global` (clp, pdhg, none).
 //   linesurf_block_labelling_study scene PATH given|detected|crop:BOX MAX_CELLS [global=none]
-//                                  [threads=2] [sweeps=2] [inner=auto]
+//                                  [threads=2] [sweeps=2] [inner=auto] [KEY=VALUE,...]
 //       the energy that `reconstruct` builds with default options (given or detected planes;
 //       crop:XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX = the segments in that box, given planes and the
 //       reference weights, as linesurf_labelling_study andalusian)
 //       on the monolithic complex, its cells cut into k-d blocks of at most each of MAX_CELLS
 //       cells (pipeline::CentroidBlocks); then the global solve with `global` (auto, pdhg,
 //       none).
-// `inner` is LabelingOptions::block_backend.
+// `inner` is LabelingOptions::block_backend; KEY=VALUE sets other LabelingOptions fields:
+// window_cells, block_halo, local_search_passes, group_move_passes, pdhg_tolerance,
+// auto_clp_max_columns, block_bound_passes.
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/centroid_blocks.h"
@@ -163,13 +165,49 @@ int Grids(const char* sizes,
   return 0;
 }
 
+// "window_cells=0,block_halo=2" into `options`; false on an unknown key.
+bool SetOptions(const std::string& list, solver::LabelingOptions& options) {
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos) return false;
+    const std::string key = item.substr(0, eq);
+    const double value = std::stod(item.substr(eq + 1));
+    if (key == "window_cells") {
+      options.window_cells = static_cast<std::size_t>(value);
+    } else if (key == "block_halo") {
+      options.block_halo = static_cast<int>(value);
+    } else if (key == "local_search_passes") {
+      options.local_search_passes = static_cast<int>(value);
+    } else if (key == "group_move_passes") {
+      options.group_move_passes = static_cast<int>(value);
+    } else if (key == "pdhg_tolerance") {
+      options.pdhg_tolerance = value;
+    } else if (key == "auto_clp_max_columns") {
+      options.auto_clp_max_columns = static_cast<std::size_t>(value);
+    } else if (key == "block_bound_passes") {
+      options.block_bound_passes = static_cast<int>(value);
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
 int SceneStudy(const char* path,
                const std::string& planes,
                const char* max_cells,
                const std::string& global,
                int threads,
                int sweeps,
-               const std::string& inner) {
+               const std::string& inner,
+               const std::string& extra) {
+  solver::LabelingOptions options;
+  if (!SetOptions(extra, options)) {
+    std::fprintf(stderr, "block_labelling_study: bad options '%s'\n", extra.c_str());
+    return 2;
+  }
   const auto start = std::chrono::steady_clock::now();
   Scene input = Take(io::ReadScene(path, {}));
   pipeline::ReconstructOptions o;
@@ -226,7 +264,6 @@ int SceneStudy(const char* path,
       threads);
   std::fflush(stdout);
   PrintHeader();
-  solver::LabelingOptions options;
   options.backend = "blocks";
   options.block_sweeps = sweeps;
   options.block_backend = inner;
@@ -267,11 +304,12 @@ int main(int argc, char** argv) {
                                 arg(5, "none"),
                                 std::atoi(arg(6, "2")),
                                 std::atoi(arg(7, "2")),
-                                arg(8, "auto"));
+                                arg(8, "auto"),
+                                arg(9, ""));
   }
   std::fprintf(
       stderr,
       "usage: linesurf_block_labelling_study grids SIZES EDGES [global] [threads] [inner] | "
-      "scene PATH given|detected MAX_CELLS [global] [threads] [sweeps] [inner]\n");
+      "scene PATH given|detected MAX_CELLS [global] [threads] [sweeps] [inner] [KEY=VALUE,...]\n");
   return 2;
 }
