@@ -8,7 +8,9 @@
 #include "engine/api/result_conversion.h"
 #include "engine/api/scene_conversion.h"
 #include "engine/core/exception.h"
+#include "engine/io/cityjson_write.h"
 #include "engine/io/reference_json.h"
+#include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/sanitize_scene.h"
 
@@ -38,6 +40,26 @@ void ThrowIfInvalid(const Status& s) {
   if (!s) throw LinesurfException(s.error());
 }
 
+/// The engine scene of an owned scene (residuals and extra fields kept); an index error names
+/// `path` when given (the file the scene goes to).
+Scene ToEngineSceneData(const SceneData& scene, const std::string& path = {}) {
+  Expected<Scene> engine_scene = api::ToEngineScene(scene.View(), scene.residuals);
+  Scene out = path.empty() ? ValueOrThrow(std::move(engine_scene))
+                           : ValueOrThrowFor(std::move(engine_scene), path);
+  out.extra_fields = scene.extra_fields;
+  return out;
+}
+
+/// Sanitation and detection, with the options checked first.
+pipeline::DetectedScene Detect(Scene scene,
+                               const DetectOptions& options,
+                               const RunControl& control) {
+  ThrowIfInvalid(options.Validate());
+  const api::HostContext host(control, options.num_threads);
+  return ValueOrThrow(pipeline::SanitizeAndDetectPlanes(
+      std::move(scene), {}, api::ToEngineOptions(options.detection, options.seed), host.Context()));
+}
+
 }  // namespace
 
 const char* LibraryVersion() noexcept { return LINESURF_VERSION_STRING; }
@@ -58,13 +80,19 @@ Expected<DetectResult> DetectPlanes(const InputScene& scene,
                                     const DetectOptions& options,
                                     const RunControl& control) noexcept {
   return CatchAll("detect", [&]() -> DetectResult {
-    ThrowIfInvalid(options.Validate());
-    const api::HostContext host(control, options.num_threads);
-    return api::ToPublicResult(ValueOrThrow(
-        pipeline::SanitizeAndDetectPlanes(ValueOrThrow(api::ToEngineScene(scene)),
-                                          {},
-                                          api::ToEngineOptions(options.detection, options.seed),
-                                          host.Context())));
+    return api::ToPublicResult(Detect(ValueOrThrow(api::ToEngineScene(scene)), options, control),
+                               options.detection.max_planes);
+  });
+}
+
+Expected<DetectedScene> DetectScenePlanes(const SceneData& scene,
+                                          const DetectOptions& options,
+                                          const RunControl& control) noexcept {
+  return CatchAll("detect", [&]() -> DetectedScene {
+    const pipeline::DetectedScene detected = Detect(ToEngineSceneData(scene), options, control);
+    return DetectedScene{api::ToSceneData(detected.scene),
+                         api::ToPublicResult(detected, options.detection.max_planes),
+                         detected.given_planes};
   });
 }
 
@@ -118,10 +146,8 @@ Expected<ReadSceneResult> ReadScene(const std::string& path, const ReadOptions& 
 
 Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept {
   return CatchAll("sanitize", [&]() -> SanitizedScene {
-    Scene engine_scene = ValueOrThrow(api::ToEngineScene(scene.View(), scene.residuals));
-    engine_scene.extra_fields = scene.extra_fields;
     pipeline::SanitizeResult sane =
-        ValueOrThrow(pipeline::SanitizeScene(std::move(engine_scene), {}));
+        ValueOrThrow(pipeline::SanitizeScene(ToEngineSceneData(scene), {}));
     SanitizedScene out{api::ToSceneData(sane.scene), {}, std::move(sane.warnings)};
     out.input_segment.reserve(sane.input_segment.size());
     for (const SegmentId s : sane.input_segment) out.input_segment.push_back(s.value());
@@ -141,9 +167,37 @@ Status WriteMesh(const std::string& path,
                  const Mesh& mesh,
                  const MeshWriteOptions& options) noexcept {
   return CatchAll("write_mesh", [&] {
-    const PolygonMesh engine_mesh = ValueOrThrow(api::ToPolygonMesh(mesh));
+    const PolygonMesh engine_mesh = ValueOrThrow(ToPolygonMesh(mesh));
     ThrowIfInvalid(io::WriteMesh(engine_mesh, path, api::ToEngineOptions(options)));
   });
+}
+
+Status WriteVertexGroups(const std::string& path, const SceneData& scene) noexcept {
+  return CatchAll("write_vertex_groups", [&] {
+    ThrowIfInvalid(io::WriteVertexGroups(ToEngineSceneData(scene, path), path));
+  });
+}
+
+Status WriteCityJson(const std::string& path,
+                     const Mesh& mesh,
+                     std::span<const Plane> planes) noexcept {
+  return CatchAll("write_cityjson", [&] {
+    const PolygonMesh engine_mesh = ValueOrThrowFor(ToPolygonMesh(mesh), path);
+    std::vector<Plane3> engine_planes;
+    engine_planes.reserve(planes.size());
+    for (const Plane& p : planes) {
+      engine_planes.push_back(Plane3{api::ToVec3(p.point), api::ToVec3(p.normal)});
+    }
+    ThrowIfInvalid(io::WriteCityJson(engine_mesh, engine_planes, path));
+  });
+}
+
+bool IsCityJsonPath(const std::string& path) noexcept {
+  try {
+    return io::IsCityJsonPath(path);
+  } catch (...) {  // std::filesystem::path may allocate
+    return false;
+  }
 }
 
 }  // namespace v1

@@ -71,6 +71,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(d.iterations, e.planes.iterations);
   EXPECT_EQ(d.max_planes, e.planes.max_planes);
   EXPECT_EQ(d.min_support, e.planes.min_support);
+  EXPECT_EQ(d.support_gap, e.planes.support_gap);
   EXPECT_EQ(d.collinear_tolerance, e.planes.collinear_tolerance);
   EXPECT_EQ(d.block_size, e.planes.block_size);
   EXPECT_EQ(d.block_halo, e.planes.block_halo);
@@ -83,12 +84,16 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.weights.corner, e.energy.corner_weight);
   EXPECT_EQ(o.weights.area, e.energy.area_weight);
   EXPECT_EQ(o.weights.viewpoint_prior, e.energy.viewpoint_prior_weight);
+  EXPECT_EQ(o.weights.open_seam, e.energy.open_seam_weight);
   EXPECT_EQ(o.sigma, e.energy.sigma);
   EXPECT_EQ(o.samples_per_sigma, e.energy.samples_per_sigma);
   EXPECT_EQ(o.structural_as_textural, e.energy.structural_as_textural);
   EXPECT_EQ(SolverBackendName(o.solver.backend), e.solver.backend);
   EXPECT_EQ(o.solver.time_limit_seconds, e.solver.time_limit_seconds);
   EXPECT_EQ(o.scene_mode, e.scene_mode);
+  EXPECT_EQ(o.engine == ComplexEngine::kBlocks, e.engine == pipeline::Engine::kBlocks);
+  EXPECT_EQ(o.block_size, e.blocks.block_size);
+  EXPECT_EQ(o.block_margin, e.blocks.support.margin_blocks);
   EXPECT_EQ(o.box_margin, e.box_margin);
   EXPECT_EQ(o.measure_quality, e.measure_quality);
   EXPECT_EQ(o.quality.fit_factor, e.quality.fit_factor);
@@ -117,6 +122,12 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
       {"solver.time_limit_seconds",
        [](ReconstructOptions& o) { o.solver.time_limit_seconds = -1.0; }},
       {"scene_mode", [](ReconstructOptions& o) { o.scene_mode = SceneMode(7); }},
+      {"engine", [](ReconstructOptions& o) { o.engine = ComplexEngine(3); }},
+      {"block_size", [](ReconstructOptions& o) { o.block_size = -1.0; }},
+      {"block_size", [](ReconstructOptions& o) { o.block_size = 3.0; }},  // monolithic engine
+      {"support_gap", [](ReconstructOptions& o) { o.detection.support_gap = -1.0; }},
+      {"weights.open_seam", [](ReconstructOptions& o) { o.weights.open_seam = 1e7; }},
+      {"block_margin", [](ReconstructOptions& o) { o.block_margin = 65; }},
       {"box_margin", [](ReconstructOptions& o) { o.box_margin = 0.0; }},
       {"quality.fit_factor", [](ReconstructOptions& o) { o.quality.fit_factor = 0.0; }},
       {"quality.samples_per_segment",

@@ -150,6 +150,7 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
        NestedInteger(&ReconstructOptions::detection, &DetectionParameters::max_planes)},
       {"detection.min_support",
        NestedInteger(&ReconstructOptions::detection, &DetectionParameters::min_support)},
+      {"detection.support_gap", LINESURF_C_REAL(detection.support_gap)},
       {"detection.collinear_tolerance", LINESURF_C_REAL(detection.collinear_tolerance)},
       {"detection.block_size", LINESURF_C_REAL(detection.block_size)},
       {"detection.block_halo", LINESURF_C_REAL(detection.block_halo)},
@@ -162,6 +163,7 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"weights.corner", LINESURF_C_REAL(weights.corner)},
       {"weights.area", LINESURF_C_REAL(weights.area)},
       {"weights.viewpoint_prior", LINESURF_C_REAL(weights.viewpoint_prior)},
+      {"weights.open_seam", LINESURF_C_REAL(weights.open_seam)},
       {"sigma",
        [](ReconstructOptions& o, double v) {
          o.sigma = v;
@@ -170,6 +172,8 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"samples_per_sigma", LINESURF_C_REAL(samples_per_sigma)},
       {"structural_as_textural", Flag(&ReconstructOptions::structural_as_textural)},
       {"solver.time_limit_seconds", LINESURF_C_REAL(solver.time_limit_seconds)},
+      {"block_size", LINESURF_C_REAL(block_size)},
+      {"block_margin", Integer(&ReconstructOptions::block_margin)},
       {"box_margin", LINESURF_C_REAL(box_margin)},
       {"measure_quality", Flag(&ReconstructOptions::measure_quality)},
       {"quality.fit_factor", LINESURF_C_REAL(quality.fit_factor)},
@@ -329,6 +333,12 @@ linesurf_status linesurf_options_set_string(linesurf_options* options,
       known = false;
       if (const auto v = linesurf::SolverBackendFromName(value)) {
         options->options.solver.backend = *v;
+        return LINESURF_OK;
+      }
+    } else if (key == "engine") {
+      known = false;
+      if (const auto v = linesurf::ComplexEngineFromName(value)) {
+        options->options.engine = *v;
         return LINESURF_OK;
       }
     }

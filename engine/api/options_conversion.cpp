@@ -1,5 +1,7 @@
 #include "engine/api/options_conversion.h"
 
+#include "partition/voxel/plane_support.h"
+
 #include <cmath>
 #include <string>
 #include <string_view>
@@ -19,6 +21,16 @@ Status ValidateDetection(const DetectionParameters& detection) {
   const Status s = ToEngineOptions(detection, 0).Validate();
   if (s) return s;
   return Error{ErrorCode::kInvalidOptions, kStage, "detection: " + s.error().message};
+}
+
+/// The engine's own check of the block margin (partition::PlaneSupportOptions), named as the
+/// facade's.
+Status ValidateBlockMargin(int block_margin) {
+  partition::PlaneSupportOptions o;
+  o.margin_blocks = block_margin;
+  const Status s = o.Validate();
+  if (s) return s;
+  return Error{ErrorCode::kInvalidOptions, kStage, "block_margin: " + s.error().message};
 }
 
 /// The engine's own check of the quality fields, named as the facade's.
@@ -49,6 +61,7 @@ PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection, std:
   o.iterations = detection.iterations;
   o.max_planes = detection.max_planes;
   o.min_support = detection.min_support;
+  o.support_gap = detection.support_gap;
   o.collinear_tolerance = detection.collinear_tolerance;
   o.block_size = detection.block_size;
   o.block_halo = detection.block_halo;
@@ -65,6 +78,7 @@ void SetEngineWeights(const EnergyWeights& weights, pipeline::EnergyOptions& ene
   energy.corner_weight = weights.corner;
   energy.area_weight = weights.area;
   energy.viewpoint_prior_weight = weights.viewpoint_prior;
+  energy.open_seam_weight = weights.open_seam;
 }
 
 pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) {
@@ -78,6 +92,10 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.solver.backend = SolverBackendName(options.solver.backend);
   o.solver.time_limit_seconds = options.solver.time_limit_seconds;
   o.scene_mode = options.scene_mode;
+  o.engine = options.engine == ComplexEngine::kBlocks ? pipeline::Engine::kBlocks
+                                                      : pipeline::Engine::kMonolithic;
+  o.blocks.block_size = options.block_size;
+  o.blocks.support.margin_blocks = options.block_margin;
   o.box_margin = options.box_margin;
   o.measure_quality = options.measure_quality;
   SetEngineQuality(options.quality, o.quality);
@@ -131,11 +149,14 @@ Status ValidateWeights(const EnergyWeights& weights) {
       {"edge_weight", "weights.edge"},
       {"corner_weight", "weights.corner"},
       {"area_weight", "weights.area"},
-      {"viewpoint_prior_weight", "weights.viewpoint_prior"}};
+      {"viewpoint_prior_weight", "weights.viewpoint_prior"},
+      {"open_seam_weight", "weights.open_seam"}};
   const std::string& message = s.error().message;
   for (const auto& [engine_name, name] : names) {
+    // The engine's name stays in brackets: the CLI's messages (docs/user/errors.md) name it.
     if (message.rfind(std::string(engine_name) + " ", 0) == 0) {
-      return Bad(name, message.substr(engine_name.size() + 1));
+      return Bad(std::string(name) + " (" + std::string(engine_name) + ")",
+                 message.substr(engine_name.size() + 1));
     }
   }
   return Error{ErrorCode::kInvalidOptions, kStage, "weights: " + message};
@@ -177,6 +198,15 @@ Status ReconstructOptions::Validate() const noexcept {
   if (!(std::isfinite(solver.time_limit_seconds) && solver.time_limit_seconds >= 0.0)) {
     return Bad("solver.time_limit_seconds", "must be finite and >= 0");
   }
+  if (!ComplexEngineName(engine)[0]) return Bad("engine", "is not a ComplexEngine");
+  if (!(std::isfinite(block_size) && block_size >= 0.0)) {
+    return Bad("block_size", "must be finite and >= 0");
+  }
+  if (engine == ComplexEngine::kMonolithic && block_size != 0.0) {
+    return Bad("block_size", "applies to the blocks engine only (per-block detection: "
+                             "detection.block_size)");
+  }
+  if (Status s = api::ValidateBlockMargin(block_margin); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
   if (Status s = api::ValidateQuality(quality); !s) return s;
   if (Status s = api::ValidateThreads(num_threads); !s) return s;

@@ -41,7 +41,7 @@ ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result) {
   return out;
 }
 
-DetectResult ToPublicResult(const pipeline::DetectedScene& detected) {
+DetectResult ToPublicResult(const pipeline::DetectedScene& detected, std::int32_t max_planes) {
   DetectResult out;
   out.planes = ToWorldPlanes(detected.scene.planes, detected.scene.world_from_local);
   out.support.reserve(detected.support.size());
@@ -51,6 +51,9 @@ DetectResult ToPublicResult(const pipeline::DetectedScene& detected) {
   out.memberships = ToMemberships(detected.scene.memberships, detected.input_segment);
   out.stats = ToPublicStats(detected.detection_stats, detected.sanitize_stats);
   out.warnings = detected.warnings;
+  if (std::string cap = PlaneCapWarning(detected.detection_stats, max_planes); !cap.empty()) {
+    out.warnings.push_back(std::move(cap));
+  }
   return out;
 }
 

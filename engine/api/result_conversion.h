@@ -11,7 +11,8 @@ namespace linesurf::api {
 [[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result);
 
 /// The planes detected on the sanitised scene, in world coordinates; memberships index the
-/// input segments.
-[[nodiscard]] DetectResult ToPublicResult(const pipeline::DetectedScene& detected);
+/// input segments; the warnings end with the plane-cap warning for `max_planes` (if any).
+[[nodiscard]] DetectResult ToPublicResult(const pipeline::DetectedScene& detected,
+                                          std::int32_t max_planes);
 
 }  // namespace linesurf::api

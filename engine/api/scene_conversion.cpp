@@ -1,6 +1,7 @@
 #include "engine/api/scene_conversion.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/world_frame.h"
 
 #include <algorithm>
 #include <string>
@@ -102,14 +103,15 @@ Expected<Scene> ToEngineScene(const InputScene& input,
 }
 
 SceneData ToSceneData(const Scene& scene) {
-  const Rigid3& t = scene.world_from_local;
+  const Vec3& t = scene.world_from_local.translation;
   SceneData data;
   data.segments.reserve(scene.NumSegments());
   for (const Segment3& s : scene.segments) {
-    data.segments.push_back(Segment{ToVector3(t.Apply(s.p1)), ToVector3(t.Apply(s.p2))});
+    data.segments.push_back(
+        Segment{ToVector3(ToWorldExact(s.p1, t)), ToVector3(ToWorldExact(s.p2, t))});
   }
   data.viewpoints.reserve(scene.viewpoints.size());
-  for (const Vec3& v : scene.viewpoints) data.viewpoints.push_back(ToVector3(t.Apply(v)));
+  for (const Vec3& v : scene.viewpoints) data.viewpoints.push_back(ToVector3(ToWorldExact(v, t)));
   data.observations.reserve(scene.observations.NumItems());
   for (std::size_t s = 0; s < scene.observations.NumRows(); ++s) {
     for (const ViewpointId v : scene.observations[SegmentId(s)]) {
@@ -117,7 +119,7 @@ SceneData ToSceneData(const Scene& scene) {
           Observation{static_cast<std::uint32_t>(s), static_cast<std::uint32_t>(v.value())});
     }
   }
-  data.planes = ToWorldPlanes(scene.planes, t);
+  data.planes = ToWorldPlanes(scene.planes, scene.world_from_local);
   for (std::size_t s = 0; s < scene.memberships.size(); ++s) {
     const PlaneMembership& m = scene.memberships[SegmentId(s)];
     for (std::uint8_t k = 0; k < m.count; ++k) {
@@ -152,45 +154,10 @@ std::vector<Plane> ToWorldPlanes(const IdVector<PlaneId, Plane3>& planes,
   std::vector<Plane> out;
   out.reserve(planes.size());
   for (const Plane3& p : planes) {
-    out.push_back(Plane{ToVector3(world_from_local.Apply(p.point)), ToVector3(p.normal)});
+    out.push_back(
+        Plane{ToVector3(ToWorldExact(p.point, world_from_local.translation)), ToVector3(p.normal)});
   }
   return out;
-}
-
-Mesh ToMesh(const PolygonMesh& mesh) {
-  Mesh out;
-  out.vertices.reserve(mesh.vertices.size());
-  for (const Vec3& v : mesh.vertices) out.vertices.push_back(ToVector3(v));
-  out.face_offsets = mesh.face_offsets;
-  out.face_indices = mesh.face_indices;
-  return out;
-}
-
-Expected<PolygonMesh> ToPolygonMesh(const Mesh& mesh) {
-  const auto bad = [](const std::string& why) -> Error {
-    return Error{ErrorCode::kInvalidInput, "mesh", why};
-  };
-  if (mesh.face_offsets.empty() || mesh.face_offsets.front() != 0) {
-    return bad("face_offsets must start with 0");
-  }
-  for (std::size_t f = 0; f + 1 < mesh.face_offsets.size(); ++f) {
-    if (mesh.face_offsets[f + 1] < mesh.face_offsets[f]) {
-      return bad("face_offsets[" + std::to_string(f + 1) + "] is smaller than the one before");
-    }
-  }
-  if (mesh.face_offsets.back() != mesh.face_indices.size()) {
-    return bad("the last face offset (" + std::to_string(mesh.face_offsets.back()) +
-               ") is not the number of face indices (" + std::to_string(mesh.face_indices.size()) +
-               ")");
-  }
-  return CatchAll("mesh", [&]() -> PolygonMesh {
-    PolygonMesh out;
-    out.vertices.reserve(mesh.vertices.size());
-    for (const Vector3& v : mesh.vertices) out.vertices.push_back(ToVec3(v));
-    out.face_offsets = mesh.face_offsets;
-    out.face_indices = mesh.face_indices;
-    return out;
-  });
 }
 
 }  // namespace linesurf::api

@@ -6,6 +6,7 @@
 #include "linesurf/types.h"
 
 #include "engine/core/polygon_mesh.h"
+#include "engine/core/public_mesh.h"
 #include "engine/core/scene.h"
 
 #include <array>
@@ -23,7 +24,8 @@ namespace linesurf::api {
 [[nodiscard]] Expected<Scene> ToEngineScene(const InputScene& input,
                                             std::span<const std::array<double, 4>> residuals = {});
 
-/// The scene in world coordinates (local + world_from_local), with residuals and extra fields.
+/// The scene in world coordinates (local + world_from_local, bit-exact where the translation is
+/// zero: ToWorldExact), with residuals and extra fields.
 [[nodiscard]] SceneData ToSceneData(const Scene& scene);
 
 /// Per engine segment s with memberships, {input_segment[s], plane} sorted by segment then plane.
@@ -31,15 +33,9 @@ namespace linesurf::api {
     const IdVector<SegmentId, PlaneMembership>& memberships,
     const IdVector<SegmentId, SegmentId>& input_segment);
 
-/// Planes moved from the local frame to world coordinates.
+/// Planes moved from the local frame to world coordinates (ToWorldExact).
 [[nodiscard]] std::vector<Plane> ToWorldPlanes(const IdVector<PlaneId, Plane3>& planes,
                                                const Rigid3& world_from_local);
-
-[[nodiscard]] Mesh ToMesh(const PolygonMesh& mesh);
-
-/// @return kInvalidInput when the face offsets do not start at 0, decrease, or end elsewhere than
-/// at the number of face indices (vertex indices are checked by the writers).
-[[nodiscard]] Expected<PolygonMesh> ToPolygonMesh(const Mesh& mesh);
 
 [[nodiscard]] inline Vec3 ToVec3(const Vector3& v) { return Vec3(v[0], v[1], v[2]); }
 [[nodiscard]] inline Vector3 ToVector3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }

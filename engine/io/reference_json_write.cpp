@@ -1,12 +1,13 @@
 // Writer of the reference JSON format: one line object per text line, shortest round-trip
 // numbers, no null, deterministic bytes.
 
-#include <cmath>
-
 #include "engine/core/exception.h"
+#include "engine/core/world_frame.h"
 #include "engine/io/file_access.h"
 #include "engine/io/number_text.h"
 #include "engine/io/reference_json.h"
+
+#include <cmath>
 
 namespace linesurf::io {
 namespace {
@@ -57,16 +58,6 @@ class JsonWriter {
   std::string out_;
 };
 
-/// world = local + translation, per coordinate; a zero translation component leaves the value's
-/// bits alone (x + 0.0 would turn -0.0 into +0.0 and break bit-exact round trips).
-Vec3 ToWorld(const Vec3& local, const Vec3& translation) {
-  Vec3 world = local;
-  for (int k = 0; k < 3; ++k) {
-    if (translation[k] != 0.0) world[k] += translation[k];
-  }
-  return world;
-}
-
 std::string SerializeScene(const Scene& scene, const std::string& path) {
   const std::size_t num_segments = scene.NumSegments();
   LINESURF_THROW_IF(scene.observations.NumRows() != num_segments, kInvalidInput, kStage,
@@ -98,9 +89,9 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
     const SegmentId id(s);
     const std::string at = "lines[" + std::to_string(s) + "]";
     out.append(s == 0 ? "\n{\"pt1\": " : ",\n{\"pt1\": ");
-    w.AppendList(ToWorld(scene.segments[id].p1, t), 3, at + ".pt1");
+    w.AppendList(ToWorldExact(scene.segments[id].p1, t), 3, at + ".pt1");
     out.append(", \"pt2\": ");
-    w.AppendList(ToWorld(scene.segments[id].p2, t), 3, at + ".pt2");
+    w.AppendList(ToWorldExact(scene.segments[id].p2, t), 3, at + ".pt2");
     out.append(", \"pt_views\": [");
     const auto row = scene.observations[id];
     for (std::size_t k = 0; k < row.size(); ++k) {
@@ -108,7 +99,7 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
                         path << ": " << at << ".pt_views[" << k << "]: viewpoint id "
                              << row[k].value() << " out of range");
       if (k > 0) out.append(", ");
-      w.AppendList(ToWorld(scene.viewpoints[row[k]], t), 3, at + ".pt_views");
+      w.AppendList(ToWorldExact(scene.viewpoints[row[k]], t), 3, at + ".pt_views");
     }
     out.push_back(']');
     if (scene.HasMemberships()) {
@@ -141,7 +132,7 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
       const Plane3& plane = scene.planes[PlaneId(p)];
       const std::string at = "planes[" + std::to_string(p) + "]";
       out.append(p == 0 ? "\n{\"inlier\": " : ",\n{\"inlier\": ");
-      w.AppendList(ToWorld(plane.point, t), 3, at + ".inlier");
+      w.AppendList(ToWorldExact(plane.point, t), 3, at + ".inlier");
       out.append(", \"normal\": ");
       w.AppendList(plane.normal, 3, at + ".normal");
       out.push_back('}');

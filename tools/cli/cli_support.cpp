@@ -48,19 +48,20 @@ int ReportError(const Error& error, const std::filesystem::path& file) {
   return ReportError(named);
 }
 
-void ConfigureRunContext(const CommonOptions& common, RunContext& ctx) {
+RunControl CliRunControl(const CommonOptions& common) {
   std::signal(SIGINT, HandleSignal);
   std::signal(SIGTERM, HandleSignal);
-  ctx.num_threads = common.threads;
-  ctx.is_cancelled = [] { return g_interrupted.load(); };
+  RunControl control;
+  control.is_cancelled = [] { return g_interrupted.load(); };
   if (!common.quiet) {
-    ctx.on_progress = [](const Progress& p) {
+    control.on_progress = [](const Progress& p) {
       std::fprintf(stderr, "\r[%s] %3d%%", p.stage.c_str(),
                    static_cast<int>(p.stage_fraction * 100.0 + 0.5));
       if (p.stage_fraction >= 1.0) std::fprintf(stderr, "\n");
       std::fflush(stderr);
     };
   }
+  return control;
 }
 
 void PrintWarning(const CommonOptions& common, const std::string& message) {

@@ -3,8 +3,7 @@
 
 #include "linesurf/error.h"
 #include "linesurf/options.h"
-
-#include "engine/core/run_context.h"
+#include "linesurf/run_control.h"
 
 #include <filesystem>
 #include <functional>
@@ -45,9 +44,8 @@ int ReportError(const Error& error);
 /// ReportError for an error of a stage that worked on the content of `file` (sanitation,
 /// detection, reconstruction, evaluation): the message names the file when it does not yet.
 int ReportError(const Error& error, const std::filesystem::path& file);
-/// A RunContext whose progress goes to stderr (unless quiet) and whose cancel flag follows
-/// SIGINT/SIGTERM.
-void ConfigureRunContext(const CommonOptions& common, RunContext& ctx);
+/// Callbacks of a run: progress to stderr (unless quiet), cancel when SIGINT/SIGTERM arrives.
+RunControl CliRunControl(const CommonOptions& common);
 /// Prints a warning line to stderr unless quiet.
 void PrintWarning(const CommonOptions& common, const std::string& message);
 /// Writes a run report (`--report`) as indented JSON; a file that cannot be written is an

@@ -6,6 +6,7 @@
 #include "partition/arrangement/validate_cell_complex.h"
 #include "partition/arrangement/write_cells_ply.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/engine_run_context.h"
 #include "tools/cli/output_files.h"
 
 #include <iostream>

@@ -1,8 +1,7 @@
 // `linesurf convert INPUT -o OUTPUT`: any input scene format to reference JSON.
 
-#include "engine/io/read_scene.h"
-#include "engine/io/reference_json.h"
-#include "engine/pipeline/sanitize_scene.h"
+#include "linesurf/linesurf.h"
+
 #include "tools/cli/commands.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
@@ -39,24 +38,24 @@ Command AddConvertCommand(CLI::App& app, CommonOptions& common) {
     args->scene.AddInputsTo(files);
     files.AddOutput("-o", args->output, kJsonExtensions);
     if (Status s = files.Prepare(); !s) return ReportError(s.error());
-    auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
+    Expected<ReadSceneResult> read = ReadScene(args->scene.input, args->scene.Options());
     if (!read) return ReportError(read.error());
     for (const std::string& w : read->warnings) {
       PrintWarning(common, args->scene.input + ": " + w);
     }
-    Scene scene = std::move(read->scene);
+    SceneData scene = std::move(read->scene);
     if (args->sanitize) {
-      auto sanitized = pipeline::SanitizeScene(std::move(scene), pipeline::SanitizeOptions{});
+      Expected<SanitizedScene> sanitized = SanitizeScene(scene);
       if (!sanitized) return ReportError(sanitized.error(), args->scene.input);
       for (const std::string& w : sanitized->warnings) PrintWarning(common, "sanitation: " + w);
       scene = std::move(sanitized->scene);
     }
     const Status written = files.Write(
-        args->output, [&](const auto& path) { return io::WriteReferenceJson(scene, path); });
+        args->output, [&](const auto& path) { return WriteScene(path.string(), scene); });
     if (!written) return ReportError(written.error());
     if (Status s = files.Commit(); !s) return ReportError(s.error());
     if (!common.quiet) {
-      std::cerr << "linesurf: wrote " << args->output << " (" << scene.NumSegments()
+      std::cerr << "linesurf: wrote " << args->output << " (" << scene.segments.size()
                 << " segments, " << scene.viewpoints.size() << " viewpoints, "
                 << scene.planes.size() << " planes)\n";
     }

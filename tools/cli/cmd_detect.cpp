@@ -1,9 +1,7 @@
 // `linesurf detect INPUT -o OUT.json`: plane detection only (docs/plane_detection.md).
 
-#include "engine/io/read_scene.h"
-#include "engine/io/reference_json.h"
-#include "engine/io/vertex_groups_write.h"
-#include "engine/pipeline/detect_scene_planes.h"
+#include "linesurf/linesurf.h"
+
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/output_files.h"
@@ -21,7 +19,7 @@ struct DetectArgs {
   std::string output;
   std::string vg;
   std::string report;
-  PlaneDetectionOptions options;
+  DetectOptions options;
   std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
 
@@ -30,9 +28,10 @@ constexpr std::size_t kLargeSceneSegments = 50000;
 
 /// The run report: options, statistics and every plane's inlier count and total length (plane
 /// i is plane i of the output JSON).
-nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& args,
-                                const pipeline::DetectedScene& r) {
-  const PlaneDetectionStats& st = r.detection_stats;
+nlohmann::json DetectReportJson(const CommonOptions& common,
+                                const DetectArgs& args,
+                                const DetectedScene& r) {
+  const DetectStats& st = r.detection.stats;
   nlohmann::json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
@@ -44,19 +43,19 @@ nlohmann::json DetectReportJson(const CommonOptions& common, const DetectArgs& a
                 {"epsilon_estimate", EpsilonJson(st.epsilon_estimate)},
                 {"blocks", st.blocks},
                 {"planes_before_fusion", st.planes_before_fusion},
-                {"planes", st.planes_after_fusion},
+                {"planes", st.planes},
                 {"merges", st.merges},
                 {"memberships_dropped", st.memberships_dropped},
                 {"capped_blocks", st.capped_blocks},
-                {"segments_with_0_planes", st.num_l0},
-                {"segments_with_1_plane", st.num_l1},
-                {"segments_with_2_planes", st.num_l2},
+                {"segments_with_0_planes", st.segments_with_0_planes},
+                {"segments_with_1_plane", st.segments_with_1_plane},
+                {"segments_with_2_planes", st.segments_with_2_planes},
                 {"candidates_evaluated", st.candidates_evaluated},
                 {"failed_draws", st.failed_draws},
                 {"seconds", st.seconds},
                 {"seconds_fusion", st.seconds_fusion}};
   nlohmann::json planes = nlohmann::json::array();
-  for (const PlaneSupport& support : r.support) {
+  for (const PlaneSupportInfo& support : r.detection.support) {
     planes.push_back(
         {{"inlier_count", support.inlier_count}, {"inlier_length", support.inlier_length}});
   }
@@ -72,28 +71,23 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   files.AddOutput("--vg", args.vg, {".vg"});
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  Expected<io::SceneReadResult> read =
-      io::ReadSceneWithWarnings(args.source.input, args.source.ReadOptions());
+  Expected<ReadSceneResult> read = ReadScene(args.source.input, args.source.Options());
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
   const std::size_t input_segments = read->scene.segments.size();
-  if (args.options.block_size <= 0.0 && input_segments > kLargeSceneSegments) {
+  if (args.options.detection.block_size <= 0.0 && input_segments > kLargeSceneSegments) {
     PrintWarning(common, std::to_string(input_segments) +
                              " segments detected as one block: this grows faster than linearly; "
                              "--block-size (e.g. the size of one building) keeps it linear");
   }
-  RunContext ctx;
-  ConfigureRunContext(common, ctx);
-  Expected<pipeline::DetectedScene> detected =
-      pipeline::SanitizeAndDetectPlanes(std::move(read->scene), {}, args.options, ctx);
+  args.options.num_threads = common.threads;
+  Expected<DetectedScene> detected =
+      DetectScenePlanes(read->scene, args.options, CliRunControl(common));
   if (!detected) return ReportError(detected.error(), args.source.input);
-  for (const std::string& w : detected->warnings) PrintWarning(common, w);
-  const Scene& scene = detected->scene;
-  const PlaneDetectionStats& st = detected->detection_stats;
+  for (const std::string& w : detected->detection.warnings) PrintWarning(common, w);
+  const SceneData& scene = detected->scene;
+  const DetectStats& st = detected->detection.stats;
   const std::size_t given_planes = detected->given_planes;
-  if (const std::string cap = PlaneCapWarning(st, args.options.max_planes); !cap.empty()) {
-    PrintWarning(common, cap);
-  }
   if (!args.report.empty()) {
     const nlohmann::json report = DetectReportJson(common, args, *detected);
     if (Status s = files.Write(
@@ -103,12 +97,12 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
     }
   }
   if (Status s = files.Write(args.output,
-                             [&](const auto& path) { return io::WriteReferenceJson(scene, path); });
+                             [&](const auto& path) { return WriteScene(path.string(), scene); });
       !s) {
     return ReportError(s.error());
   }
   if (!args.vg.empty()) {
-    auto write_vg = [&](const auto& path) { return io::WriteVertexGroups(scene, path); };
+    auto write_vg = [&](const auto& path) { return WriteVertexGroups(path.string(), scene); };
     if (Status s = files.Write(args.vg, write_vg); !s) {
       return ReportError(s.error());
     }
@@ -128,13 +122,20 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
                  "detect: %zu segments, eps %.6g%s; %d planes (%d before fusion, %d merges)%s\n"
                  "detect: segments on 0/1/2 planes: %lld / %lld / %lld; %lld candidates, %lld "
                  "failed draws; %.3f s (fusion %.3f s)\n",
-                 scene.segments.size(), st.epsilon,
+                 scene.segments.size(),
+                 st.epsilon,
                  (" (" + st.epsilon_estimate.source + ")").c_str(),
-                 st.planes_after_fusion, st.planes_before_fusion, st.merges,
-                 given_planes ? " (given planes ignored)" : "", static_cast<long long>(st.num_l0),
-                 static_cast<long long>(st.num_l1), static_cast<long long>(st.num_l2),
+                 st.planes,
+                 st.planes_before_fusion,
+                 st.merges,
+                 given_planes ? " (given planes ignored)" : "",
+                 static_cast<long long>(st.segments_with_0_planes),
+                 static_cast<long long>(st.segments_with_1_plane),
+                 static_cast<long long>(st.segments_with_2_planes),
                  static_cast<long long>(st.candidates_evaluated),
-                 static_cast<long long>(st.failed_draws), st.seconds, st.seconds_fusion);
+                 static_cast<long long>(st.failed_draws),
+                 st.seconds,
+                 st.seconds_fusion);
   }
   return kExitOk;
 }
@@ -150,7 +151,7 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
   args->registry = std::make_unique<OptionRegistry>(*sub);
-  RegisterDetectionOptions(*args->registry, args->options);
+  RegisterDetectionOptions(*args->registry, args->options.detection);
   args->registry->Add("seed", args->options.seed, "Random seed");
   sub->add_option("--vg", args->vg, "Also write the planes as PolyFit/abspy vertex groups");
   sub->add_option("--report", args->report,

@@ -9,8 +9,9 @@
 #include "engine/pipeline/surface_quality.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
-#include "tools/cli/output_files.h"
+#include "tools/cli/engine_run_context.h"
 #include "tools/cli/option_checks.h"
+#include "tools/cli/output_files.h"
 #include "tools/cli/surface_quality_json.h"
 #include "tools/eval/evaluate_mesh.h"
 

@@ -1,7 +1,7 @@
 // `linesurf info INPUT`: what a scene file holds (counts, extent, histograms, warnings).
 
-#include "engine/io/read_scene.h"
-#include "engine/pipeline/sanitize_scene.h"
+#include "linesurf/linesurf.h"
+
 #include "tools/cli/commands.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
@@ -10,12 +10,15 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 namespace linesurf::cli {
 namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// Upper bounds (inclusive) of the views-per-segment bins; the last bin is open.
 constexpr std::size_t kViewBinUpper[] = {0, 1, 2, 5, 10, 20, 50, 100};
@@ -31,51 +34,81 @@ std::string Num(double v) {
   return buffer;
 }
 
-std::string VecText(const Vec3& v) { return "[" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + "]"; }
+std::string VecText(const Vector3& v) {
+  return "[" + Num(v[0]) + ", " + Num(v[1]) + ", " + Num(v[2]) + "]";
+}
 
-nlohmann::json VecJson(const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+nlohmann::json VecJson(const Vector3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
 
-nlohmann::json BoxJson(const Box3& box) {
+bool AllFinite(const Vector3& v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+double Norm(const Vector3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/// An axis-aligned box of finite points (empty until the first Extend).
+struct Bounds {
+  Vector3 min{kInf, kInf, kInf};
+  Vector3 max{-kInf, -kInf, -kInf};
+
+  void Extend(const Vector3& p) {
+    for (int k = 0; k < 3; ++k) {
+      min[k] = std::min(min[k], p[k]);
+      max[k] = std::max(max[k], p[k]);
+    }
+  }
+  [[nodiscard]] bool IsEmpty() const { return !(min[0] <= max[0]); }
+  [[nodiscard]] Vector3 Extent() const {
+    return {max[0] - min[0], max[1] - min[1], max[2] - min[2]};
+  }
+};
+
+nlohmann::json BoxJson(const Bounds& box) {
   if (box.IsEmpty()) return nullptr;
-  return {{"min", VecJson(box.min)}, {"max", VecJson(box.max)}, {"extent", VecJson(box.Extent())},
-          {"diagonal", box.Extent().norm()}};
+  return {{"min", VecJson(box.min)},
+          {"max", VecJson(box.max)},
+          {"extent", VecJson(box.Extent())},
+          {"diagonal", Norm(box.Extent())}};
 }
 
 /// Everything `info` reports, as JSON (the text output is rendered from it).
-nlohmann::json Describe(const Scene& scene) {
+nlohmann::json Describe(const SceneData& scene) {
   nlohmann::json info;
-  info["segments"] = scene.NumSegments();
+  info["segments"] = scene.segments.size();
   info["viewpoints"] = scene.viewpoints.size();
-  info["observations"] = scene.observations.NumItems();
+  info["observations"] = scene.observations.size();
   info["residuals"] = scene.residuals.size();
   info["planes"] = scene.planes.size();
-  if (scene.HasMemberships()) {
+  if (!scene.planes.empty() || !scene.memberships.empty()) {
+    std::vector<int> planes_of(scene.segments.size(), 0);
+    for (const Membership& m : scene.memberships) ++planes_of[m.segment];
     std::size_t counts[3] = {0, 0, 0};
-    for (const PlaneMembership& m : scene.memberships) ++counts[std::min<int>(m.count, 2)];
+    for (const int n : planes_of) ++counts[std::min(n, 2)];
     info["segments_by_plane_count"] = {counts[0], counts[1], counts[2]};
   }
-  Box3 segments_box, all_box;
+  Bounds segments_box, all_box;
   std::vector<double> lengths;
-  lengths.reserve(scene.NumSegments());
-  for (const Segment3& s : scene.segments) {
-    if (s.p1.allFinite() && s.p2.allFinite()) {
+  lengths.reserve(scene.segments.size());
+  for (const Segment& s : scene.segments) {
+    if (AllFinite(s.p1) && AllFinite(s.p2)) {
       segments_box.Extend(s.p1);
       segments_box.Extend(s.p2);
-      const double length = s.Length();
+      const double length = Norm({s.p2[0] - s.p1[0], s.p2[1] - s.p1[1], s.p2[2] - s.p1[2]});
       if (std::isfinite(length)) lengths.push_back(length);  // overflow (|x| ~ 1e300): not binned
     }
   }
   all_box = segments_box;
-  for (const Vec3& v : scene.viewpoints) {
-    if (v.allFinite()) all_box.Extend(v);
+  for (const Vector3& v : scene.viewpoints) {
+    if (AllFinite(v)) all_box.Extend(v);
   }
   info["bounding_box"] = BoxJson(segments_box);
   info["bounding_box_with_viewpoints"] = BoxJson(all_box);
 
+  std::vector<std::size_t> views_of(scene.segments.size(), 0);
+  for (const Observation& o : scene.observations) ++views_of[o.segment];
   nlohmann::json views = nlohmann::json::array();
   std::vector<std::size_t> view_bins(std::size(kViewBinUpper) + 1, 0);
-  for (std::size_t s = 0; s < scene.observations.NumRows(); ++s) {
-    const std::size_t n = scene.observations[SegmentId(s)].size();
+  for (const std::size_t n : views_of) {
     const auto* bin = std::lower_bound(std::begin(kViewBinUpper), std::end(kViewBinUpper), n);
     ++view_bins[static_cast<std::size_t>(bin - std::begin(kViewBinUpper))];
   }
@@ -138,11 +171,11 @@ void PrintText(const nlohmann::json& info, const std::string& input) {
       continue;
     }
     const auto vec = [](const nlohmann::json& a) {
-      return Vec3(a[0].get<double>(), a[1].get<double>(), a[2].get<double>());
+      return Vector3{a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
     };
-    const Vec3 e = vec(b["extent"]);
+    const Vector3 e = vec(b["extent"]);
     std::cout << VecText(vec(b["min"])) << " .. " << VecText(vec(b["max"])) << ", extent "
-              << Num(e.x()) << " x " << Num(e.y()) << " x " << Num(e.z()) << ", diagonal "
+              << Num(e[0]) << " x " << Num(e[1]) << " x " << Num(e[2]) << ", diagonal "
               << Num(b["diagonal"].get<double>()) << "\n";
   }
   std::cout << "views per segment:";
@@ -181,12 +214,12 @@ Command AddInfoCommand(CLI::App& app, CommonOptions& /*common*/) {
     OutputFiles files("info");
     args->scene.AddInputsTo(files);
     if (Status s = files.Prepare(); !s) return ReportError(s.error());
-    auto read = io::ReadSceneWithWarnings(args->scene.input, args->scene.ReadOptions());
+    Expected<ReadSceneResult> read = ReadScene(args->scene.input, args->scene.Options());
     if (!read) return ReportError(read.error());
     nlohmann::json info = Describe(read->scene);
     nlohmann::json warnings = read->warnings;
     // What sanitation would fix or drop before a reconstruction.
-    auto sanitized = pipeline::SanitizeScene(read->scene, pipeline::SanitizeOptions{});
+    Expected<SanitizedScene> sanitized = SanitizeScene(read->scene);
     if (sanitized) {
       for (const std::string& w : sanitized->warnings) warnings.push_back("sanitation: " + w);
     }

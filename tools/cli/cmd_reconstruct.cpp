@@ -1,17 +1,15 @@
 // `linesurf reconstruct INPUT -o MESH.{ply,obj,off,city.json}`: the whole method
 // (docs/reconstruction.md).
 
-#include "engine/io/cityjson_write.h"
-#include "engine/io/mesh_io.h"
-#include "engine/io/read_scene.h"
-#include "engine/pipeline/reconstruct.h"
+#include "linesurf/linesurf.h"
+
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 #include "tools/cli/surface_quality_json.h"
-#include "tools/eval/mesh_topology.h"
+#include "tools/eval/self_intersection.h"
 
 #include <cmath>
 #include <cstdio>
@@ -30,12 +28,12 @@ struct ReconstructArgs {
   std::string report;
   bool ascii = false;
   bool cityjson = false;
-  pipeline::ReconstructOptions options;
+  ReconstructOptions options;
   std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
 
-nlohmann::json ReportJson(const ReconstructArgs& args, const pipeline::ReconstructResult& r) {
-  const pipeline::RunStats& s = r.stats;
+nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& r) {
+  const ReconstructStats& s = r.stats;
   nlohmann::json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
@@ -101,39 +99,33 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
   OutputFiles files("reconstruct");
   args.source.AddInputsTo(files);
-  const bool cityjson = args.cityjson || io::IsCityJsonPath(args.output);
+  const bool cityjson = args.cityjson || IsCityJsonPath(args.output);
   files.AddOutput("-o", args.output, cityjson ? std::vector<std::string>{} : kMeshExtensions);
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  Expected<io::SceneReadResult> read =
-      io::ReadSceneWithWarnings(args.source.input, args.source.ReadOptions());
+  Expected<ReadSceneResult> read = ReadScene(args.source.input, args.source.Options());
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
 
-  pipeline::ReconstructOptions& options = args.options;
-  options.num_threads = common.threads;
-
-  RunContext ctx;
-  ConfigureRunContext(common, ctx);
-  Expected<pipeline::ReconstructResult> result =
-      pipeline::Reconstruct(read->scene, options, ctx);
+  args.options.num_threads = common.threads;
+  Expected<ReconstructResult> result =
+      Reconstruct(read->scene.View(), args.options, CliRunControl(common));
   if (!result) return ReportError(result.error(), args.source.input);
   for (const std::string& w : result->warnings) PrintWarning(common, w);
   // The mesh must pass the self-intersection check of `evaluate` (issue 12): never written
   // in silence when it does not.
-  if (Expected<MeshTopology> topology = CheckMeshTopology(result->mesh);
-      topology && topology->self_intersecting) {
+  if (Expected<bool> intersects = IntersectsItself(result->mesh); intersects && *intersects) {
     return ReportError(Error{ErrorCode::kDegenerate, "reconstruct",
                              "the surface intersects itself (the check of linesurf evaluate): "
                              "a defect of linesurf, please report it with the input"});
   }
 
-  io::MeshWriteOptions write;
+  MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   // The format follows the destination's name: the staged file keeps only its last extension.
   auto write_surface = [&](const std::filesystem::path& path) {
-    return cityjson ? io::WriteCityJson(result->mesh, result->planes.raw(), path)
-                    : io::WriteMesh(result->mesh, path, write);
+    return cityjson ? WriteCityJson(path.string(), result->mesh, result->planes)
+                    : WriteMesh(path.string(), result->mesh, write);
   };
   if (Status s = files.Write(args.output, write_surface); !s) return ReportError(s.error());
   if (!args.report.empty()) {
@@ -146,7 +138,7 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
     }
   }
   if (Status s = files.Commit(); !s) return ReportError(s.error());
-  const pipeline::RunStats& s = result->stats;
+  const ReconstructStats& s = result->stats;
   if (!common.quiet) {
     std::fprintf(stderr,
                  "reconstruct: %zu segments, %zu planes, %s scene; %zu cells, LP %zu x %zu (%s, "
@@ -168,8 +160,8 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
 
 Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   auto args = std::make_shared<ReconstructArgs>();
-  pipeline::ReconstructOptions& o = args->options;
-  pipeline::EnergyOptions& e = o.energy;
+  ReconstructOptions& o = args->options;
+  EnergyWeights& w = o.weights;
   Command cmd;
   cmd.app = app.add_subcommand(
       "reconstruct", "Reconstruct a closed piecewise-planar mesh from 3D line segments");
@@ -178,39 +170,55 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
   sub->add_option("--report", args->report, "Write the run report (JSON) here");
   OptionRegistry& r = *(args->registry = std::make_unique<OptionRegistry>(*sub));
-  r.AddChoice("planes", o.use_given_planes, {{"detect", false}, {"given", true}},
+  r.AddChoice("planes",
+              o.planes,
+              {{"detect", PlaneSource::kDetect}, {"given", PlaneSource::kGiven}},
               "Planes: detect them, or use the input's");
-  r.AddChoice("scene", o.scene_mode,
-              {{"exterior", pipeline::SceneMode::kExterior},
-               {"interior", pipeline::SceneMode::kInterior},
-               {"auto", pipeline::SceneMode::kAuto}},
+  r.AddChoice("scene",
+              o.scene_mode,
+              {{"exterior", SceneMode::kExterior},
+               {"interior", SceneMode::kInterior},
+               {"auto", SceneMode::kAuto}},
               "Boundary: box cells empty (exterior), full (interior), or decided");
-  r.Add("w-textural", e.textural_weight, "Textural weight");
-  r.Add("w-structural", e.structural_weight, "Structural weight");
-  r.Add("w-visibility", e.visibility_weight, "Visibility weight");
-  r.Add("w-edge", e.edge_weight, "Edge regularisation weight");
-  r.Add("w-corner", e.corner_weight, "Corner regularisation weight");
-  r.Add("w-area", e.area_weight, "Area weight");
+  r.Add("w-textural", w.textural, "Textural weight");
+  r.Add("w-structural", w.structural, "Structural weight");
+  r.Add("w-visibility", w.visibility, "Visibility weight");
+  r.Add("w-edge", w.edge, "Edge regularisation weight");
+  r.Add("w-corner", w.corner, "Corner regularisation weight");
+  r.Add("w-area", w.area, "Area weight");
   r.Add("w-open-seam",
-        e.open_seam_weight,
+        w.open_seam,
         "Block engine: weight of surface on block faces that carry no plane, per area / sigma^2");
-  r.Add("w-prior", e.viewpoint_prior_weight, "Viewpoint prior weight");
-  r.Add("sigma", e.sigma, "Scale sigma, scene units (default: median length)");
-  r.Add("samples-per-sigma", e.samples_per_sigma, "Samples per sigma of segment");
-  r.AddFlag("structural-as-textural", e.structural_as_textural,
+  r.Add("w-prior", w.viewpoint_prior, "Viewpoint prior weight");
+  r.Add("sigma", o.sigma, "Scale sigma, scene units (default: median length)");
+  r.Add("samples-per-sigma", o.samples_per_sigma, "Samples per sigma of segment");
+  r.AddFlag("structural-as-textural",
+            o.structural_as_textural,
             "Ablation: structural segments count as two textural ones");
-  r.Add("solver", o.solver.backend, "Labelling backend: auto, clp, maxflow, pdhg, band, blocks, cbc or clp-barrier");
+  r.AddChoice("solver",
+              o.solver.backend,
+              {{"auto", SolverBackend::kAuto},
+               {"clp", SolverBackend::kClp},
+               {"maxflow", SolverBackend::kMaxflow},
+               {"pdhg", SolverBackend::kPdhg},
+               {"band", SolverBackend::kBand},
+               {"cbc", SolverBackend::kCbc},
+               {"clp-barrier", SolverBackend::kClpBarrier},
+               {"blocks", SolverBackend::kBlocks}},
+              "Labelling backend (auto: by model size)");
   r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
-  r.AddChoice("engine", o.engine,
-              {{"monolithic", pipeline::Engine::kMonolithic}, {"blocks", pipeline::Engine::kBlocks}},
+  r.AddChoice("engine",
+              o.engine,
+              {{"monolithic", ComplexEngine::kMonolithic}, {"blocks", ComplexEngine::kBlocks}},
               "Cell complex: one arrangement of the scene box, or per-block arrangements "
               "(blocks of --block-size, automatic when 0)");
   r.Add("block-size",
-        o.blocks.block_size,
+        o.block_size,
         "Block engine: side of the base blocks, scene units (0 = automatic; --engine blocks "
         "only)")
       ->check(AtLeast(0.0));
-  r.Add("block-margin", o.blocks.support.margin_blocks,
+  r.Add("block-margin",
+        o.block_margin,
         "Blocks a plane's support region is dilated by (--engine blocks)")
       ->check(Between(0.0, 64.0));
   r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
@@ -223,7 +231,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
             o.measure_quality,
             "Figures without ground truth in the report (data fit, visibility, components; "
             "--quality=false skips them)");
-  RegisterDetectionOptions(r, o.planes, "detect-");
+  RegisterDetectionOptions(r, o.detection, "detect-");
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;
 }

@@ -52,7 +52,10 @@ int Run(const RenderArgs& args_in) {
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
   std::optional<Scene> scene;
   if (!args.lines.input.empty()) {
-    auto read = io::ReadScene(args.lines.input, args.lines.ReadOptions());
+    io::SceneReadOptions read_options;
+    read_options.nvm = args.lines.nvm;
+    read_options.colmap = args.lines.colmap;
+    auto read = io::ReadScene(args.lines.input, read_options);
     if (!read) return ReportError(read.error());
     scene = std::move(*read);
   }

@@ -5,7 +5,7 @@
 namespace linesurf::cli {
 
 void RegisterDetectionOptions(OptionRegistry& registry,
-                              PlaneDetectionOptions& options,
+                              DetectionParameters& options,
                               const std::string& block_prefix) {
   registry
       .Add("epsilon",

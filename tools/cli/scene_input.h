@@ -3,12 +3,13 @@
 // reconstruct, render --lines): the scene file plus --nvm / --colmap for the formats whose
 // observations are camera ids (Line3D++ and LIMAP .txt).
 
+#include "linesurf/options.h"
+
+#include "tools/cli/output_files.h"
+
 #include <string>
 
 #include <CLI/CLI.hpp>
-
-#include "engine/io/read_scene.h"
-#include "tools/cli/output_files.h"
 
 namespace linesurf::cli {
 
@@ -17,8 +18,9 @@ struct SceneInputArgs {
   std::string nvm;
   std::string colmap;
 
-  [[nodiscard]] io::SceneReadOptions ReadOptions() const {
-    io::SceneReadOptions options;
+  /// The facade's read options (format from the file name and content).
+  [[nodiscard]] linesurf::ReadOptions Options() const {
+    linesurf::ReadOptions options;
     options.nvm = nvm;
     options.colmap = colmap;
     return options;

@@ -4,10 +4,10 @@
 
 namespace linesurf::cli {
 
-nlohmann::json SurfaceQualityJson(const pipeline::SurfaceQuality& q) {
+nlohmann::json SurfaceQualityJson(const SurfaceQuality& q) {
   nlohmann::json components = nlohmann::json::array();
   for (std::size_t i = 0; i < q.components.size() && i < kMaxListedComponents; ++i) {
-    const pipeline::ComponentQuality& c = q.components[i];
+    const ComponentQuality& c = q.components[i];
     components.push_back({{"faces", c.faces},
                           {"volume", c.volume},
                           {"supported_length", c.supported_length},
@@ -31,7 +31,7 @@ nlohmann::json SurfaceQualityJson(const pipeline::SurfaceQuality& q) {
           {"planes_off_surface", std::move(off)}};
 }
 
-std::string SurfaceQualitySummary(const pipeline::SurfaceQuality& q, const std::string& prefix) {
+std::string SurfaceQualitySummary(const SurfaceQuality& q, const std::string& prefix) {
   char buf[512];
   std::snprintf(buf,
                 sizeof buf,

@@ -86,6 +86,7 @@ void BindOptions(py::module_& m) {
       .Field("iterations", &D::iterations, "maximum candidate pairs per plane (>= 1)")
       .Field("max_planes", &D::max_planes, "maximum number of planes (>= 1), per block")
       .Field("min_support", &D::min_support, "minimum inlier segments of a plane (>= 2)")
+      .Field("support_gap", &D::support_gap, "one plane, one piece: gap, median lengths (0 = off)")
       .Field("collinear_tolerance", &D::collinear_tolerance, "collinear merge, x eps [0, 0.5]")
       .Field("block_size", &D::block_size, "per-block detection cube side (0 = one block)")
       .Field("block_halo", &D::block_halo, "block halo, fraction of its side [0, 0.5)")
@@ -101,6 +102,7 @@ void BindOptions(py::module_& m) {
       .Field("corner", &W::corner, "corner regularisation (>= 0)")
       .Field("area", &W::area, "surface area term (>= 0)")
       .Field("viewpoint_prior", &W::viewpoint_prior, "viewpoint prior per observation (>= 0)")
+      .Field("open_seam", &W::open_seam, "blocks engine: surface on plane-less block faces (>= 0)")
       .Finish();
 
   using S = SolverOptions;
@@ -109,7 +111,7 @@ void BindOptions(py::module_& m) {
                  &S::backend,
                  &SolverBackendName,
                  &SolverBackendFromName,
-                 "'auto', 'clp', 'maxflow', 'pdhg', 'band', 'cbc' or 'clp-barrier'")
+                 "'auto', 'clp', 'maxflow', 'pdhg', 'band', 'cbc', 'clp-barrier' or 'blocks'")
       .Field("time_limit_seconds", &S::time_limit_seconds, "solve wall-time limit (0 = none)")
       .Finish();
 
@@ -139,6 +141,13 @@ void BindOptions(py::module_& m) {
           .Field("samples_per_sigma", &R::samples_per_sigma, "evidence samples per sigma")
           .Field("structural_as_textural", &R::structural_as_textural, "ablation")
           .Field("solver", &R::solver, "SolverOptions")
+          .EnumField("engine",
+                     &R::engine,
+                     &ComplexEngineName,
+                     &ComplexEngineFromName,
+                     "cell complex: 'monolithic' or 'blocks'")
+          .Field("block_size", &R::block_size, "blocks engine: base block side (0 = automatic)")
+          .Field("block_margin", &R::block_margin, "blocks a plane's support is dilated by [0, 64]")
           .Field("box_margin", &R::box_margin, "box growth, fraction of its extent (0, 10]")
           .Field("measure_quality", &R::measure_quality, "quality figures in the report")
           .Field("quality", &R::quality, "QualityOptions")

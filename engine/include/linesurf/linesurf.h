@@ -30,6 +30,7 @@
 #include "linesurf/version.h"
 
 #include <memory>
+#include <span>
 #include <string>
 
 namespace linesurf {
@@ -50,6 +51,12 @@ inline namespace v1 {
 /// @return kInvalidOptions, kInvalidInput, kCancelled, kResourceExhausted, kInternal.
 [[nodiscard]] LINESURF_API Expected<DetectResult> DetectPlanes(
     const InputScene& scene, const DetectOptions& options, const RunControl& control = {}) noexcept;
+
+/// @brief DetectPlanes on an owned scene, returning also the sanitised scene with the detected
+/// planes (residuals and extra fields kept), ready for WriteScene or WriteVertexGroups.
+/// @return the errors of DetectPlanes.
+[[nodiscard]] LINESURF_API Expected<DetectedScene> DetectScenePlanes(
+    const SceneData& scene, const DetectOptions& options, const RunControl& control = {}) noexcept;
 
 /// @brief A prepared reconstruction, for solving again with other weights without detecting
 /// planes or building the cell complex again (the reference's line_based_recons_param
@@ -116,6 +123,24 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteMesh(const std::string& path,
                                             const Mesh& mesh,
                                             const MeshWriteOptions& options = {}) noexcept;
+
+/// @brief Writes the planes of `scene` as PolyFit / abspy vertex groups (.vg: the segments'
+/// endpoints, grouped by plane; docs/formats.md). Written to a temporary name and renamed.
+/// @return kInvalidInput (an index out of range, a non-finite value, an unwritable path), naming
+/// the file.
+[[nodiscard]] LINESURF_API Status WriteVertexGroups(const std::string& path,
+                                                    const SceneData& scene) noexcept;
+
+/// @brief Writes a mesh as CityJSON 1.1: one Building per connected component, a semantic
+/// surface per plane of `planes` its faces lie on (docs/formats.md); the same bytes as
+/// `linesurf reconstruct -o m.city.json`. Written to a temporary name and renamed.
+/// @return kInvalidInput (bad face, non-finite coordinate, unwritable path).
+[[nodiscard]] LINESURF_API Status WriteCityJson(const std::string& path,
+                                                const Mesh& mesh,
+                                                std::span<const Plane> planes) noexcept;
+
+/// True for a name ending in ".city.json" or ".cityjson" (case-insensitive): CityJSON by name.
+[[nodiscard]] LINESURF_API bool IsCityJsonPath(const std::string& path) noexcept;
 
 }  // namespace v1
 }  // namespace linesurf

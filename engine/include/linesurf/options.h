@@ -44,6 +44,10 @@ struct DetectionParameters {
   std::int32_t max_planes = 160;
   /// Minimum inlier segments of a plane (>= 2; the reference uses 3).
   std::int32_t min_support = 3;
+  /// One plane, one piece: a plane whose inliers fall into pieces more than this many median
+  /// line lengths apart that disagree about it keeps its largest piece ([0, 1000]; 0 = off, the
+  /// paper's method; docs/plane_detection.md).
+  double support_gap = 8.0;
   /// Segments on one infinite line within this x eps are detected as one line ([0, 0.5]; 0 =
   /// off).
   double collinear_tolerance = 1e-3;
@@ -93,6 +97,12 @@ enum class SolverBackend {
   kBlocks,      ///< per-block solve (blocks of cells, in parallel, with halos); large complexes
 };
 
+/// How the cell complex is built (docs/block_engine.md).
+enum class ComplexEngine {
+  kMonolithic,  ///< one arrangement of the scene box
+  kBlocks,      ///< per-block arrangements of ReconstructOptions::block_size (0: automatic)
+};
+
 /// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
 /// Reconstruction::Solve without rebuilding the cell complex.
 struct EnergyWeights {
@@ -114,6 +124,9 @@ struct EnergyWeights {
   double area = 0.0;
   /// Viewpoint prior per observation when the viewpoint's cell is full (>= 0; reference: 1).
   double viewpoint_prior = 1.0;
+  /// ComplexEngine::kBlocks, per area / sigma^2: surface on a block face that carries no plane
+  /// (>= 0; 1). Unpriced, a solid of block faces costs nothing (a box of blocks, not a house).
+  double open_seam = 1.0;
 };
 
 /// Options of the LP labelling.
@@ -150,6 +163,13 @@ struct ReconstructOptions {
   /// Ablation: structural segments count as two textural ones.
   bool structural_as_textural = false;
   SolverOptions solver;
+  ComplexEngine engine = ComplexEngine::kMonolithic;
+  /// ComplexEngine::kBlocks: side of the base blocks, scene units (>= 0; 0 = the size rule).
+  /// Must be 0 with the monolithic engine. Detection keeps its own blocks
+  /// (DetectionParameters::block_size).
+  double block_size = 0.0;
+  /// Blocks a plane's support region is dilated by (ComplexEngine::kBlocks; [0, 64]).
+  int block_margin = 1;
   /// The box is the bounding box of segments and viewpoints grown on each side by this fraction
   /// of its extent ((0, 10]; 0.05 as the reference, so viewpoints lie in bounded cells).
   double box_margin = 0.05;
@@ -218,8 +238,8 @@ struct MeshWriteOptions {
   return "";
 }
 
-/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" / "blocks" ("" for a value outside
-/// the enum).
+/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" / "blocks" ("" for a
+/// value outside the enum).
 [[nodiscard]] inline const char* SolverBackendName(SolverBackend backend) noexcept {
   switch (backend) {
     case SolverBackend::kAuto:
@@ -237,6 +257,17 @@ struct MeshWriteOptions {
     case SolverBackend::kClpBarrier:
       return "clp-barrier";
     case SolverBackend::kBlocks:
+      return "blocks";
+  }
+  return "";
+}
+
+/// "monolithic" / "blocks" ("" for a value outside the enum).
+[[nodiscard]] inline const char* ComplexEngineName(ComplexEngine engine) noexcept {
+  switch (engine) {
+    case ComplexEngine::kMonolithic:
+      return "monolithic";
+    case ComplexEngine::kBlocks:
       return "blocks";
   }
   return "";
@@ -268,6 +299,10 @@ std::optional<E> EnumFromName(std::string_view name,
 [[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
     std::string_view name) noexcept {
   return internal::EnumFromName<SolverBackend>(name, 8, &SolverBackendName);
+}
+[[nodiscard]] inline std::optional<ComplexEngine> ComplexEngineFromName(
+    std::string_view name) noexcept {
+  return internal::EnumFromName<ComplexEngine>(name, 2, &ComplexEngineName);
 }
 
 }  // namespace v1

@@ -182,7 +182,21 @@ struct DetectResult {
   /// `segment` indexes the INPUT segments; sorted by segment, then plane.
   std::vector<Membership> memberships;
   DetectStats stats;
+  /// Sanitation warnings, then the plane-cap warning when a block stopped at max_planes.
   std::vector<std::string> warnings;
+};
+
+/// Result of DetectScenePlanes.
+struct DetectedScene {
+  /// The sanitised scene holding the detected planes and memberships (the input's own planes
+  /// dropped), world coordinates, residuals and extra fields kept: what `linesurf detect -o`
+  /// writes.
+  SceneData scene;
+  /// The planes, support, memberships (indexing the input segments), stats and warnings, as
+  /// DetectPlanes returns them.
+  DetectResult detection;
+  /// Planes the input carried (ignored by detection).
+  std::size_t given_planes = 0;
 };
 
 /// Result of SanitizeScene.
