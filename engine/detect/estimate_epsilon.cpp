@@ -110,9 +110,20 @@ EpsilonEstimate Probe(const Scene& scene,
   probe.max_planes = std::min(options.max_planes, kProbePlanes);
   double eps = eps0;
   EpsilonEstimate out;
-  for (int round = 1; round <= kMaxRounds; ++round) {
+  // The probes report as stage estimate_epsilon (round r covers ((r - 1) / kMaxRounds,
+  // r / kMaxRounds]), so detect_planes progress runs once, for the detection itself.
+  int round = 1;
+  RunContext probe_ctx;
+  probe_ctx.num_threads = ctx.num_threads;
+  probe_ctx.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
+  probe_ctx.on_progress = [&ctx, &round](const Progress& p) {
+    ctx.ReportProgress(kStage, (round - 1 + p.stage_fraction) / kMaxRounds);
+  };
+  probe_ctx.log = ctx.log;
+  ctx.ReportProgress(kStage, 0.0);
+  for (; round <= kMaxRounds; ++round) {
     probe.epsilon = eps;
-    Expected<PlaneDetectionResult> found = DetectPlanes(scene, probe, ctx);
+    Expected<PlaneDetectionResult> found = DetectPlanes(scene, probe, probe_ctx);
     if (!found) throw LinesurfException(found.error());
     const EpsilonEstimate e =
         ScaleOfResiduals(scene, found->planes, found->memberships, options.epsilon_over_noise);
@@ -125,6 +136,7 @@ EpsilonEstimate Probe(const Scene& scene,
     eps = next;
     if (converged) break;
   }
+  ctx.ReportProgress(kStage, 1.0);
   out.epsilon = eps;
   out.initial_epsilon = eps0;
   out.source = "probe";

@@ -23,8 +23,9 @@ class LINESURF_API LogSink {
                      const std::string& message) noexcept = 0;
 };
 
-/// Progress of a run: the running stage ("detect_planes", "cell_complex", "evidence",
-/// "solve_labeling", ...) and its completed fraction in [0, 1].
+/// Progress of a run: the running stage ("estimate_epsilon", "detect_planes", "cell_complex",
+/// "evidence", "solve_labeling", ...; each runs once per call) and its completed fraction in
+/// [0, 1].
 struct Progress {
   std::string stage;
   double stage_fraction = 0.0;
