@@ -17,7 +17,9 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -148,6 +150,38 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
   given.planes = PlaneSource::kGiven;
   given.detection.epsilon = -1.0;
   EXPECT_TRUE(given.Validate().has_value());
+}
+
+// The block rules are the engine's (pipeline::ValidateBlockSize, ValidateEngineBlockSize); the
+// messages name the facade's fields, as the CLI, the C API and Python show them.
+TEST(FacadeOptions, BlockFieldsFollowTheEnginesRulesUnderTheFacadesNames) {
+  const auto message = [](const std::function<void(ReconstructOptions&)>& spoil) {
+    ReconstructOptions o;
+    spoil(o);
+    const Status s = o.Validate();
+    EXPECT_FALSE(s.has_value());
+    return s ? std::string() : s.error().ToString();
+  };
+  EXPECT_EQ(message([](ReconstructOptions& o) { o.block_size = 3.0; }),
+            "options: block_size applies to the blocks engine only (per-block detection: "
+            "detection.block_size)");
+  for (double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_EQ(message([bad](ReconstructOptions& o) {
+                o.engine = ComplexEngine::kBlocks;
+                o.block_size = bad;
+              }),
+              "options: block_size must be finite and >= 0")
+        << bad;
+  }
+  EXPECT_EQ(message([](ReconstructOptions& o) {
+              o.engine = ComplexEngine::kBlocks;
+              o.block_margin = -1;
+            }).rfind("options: block_margin: ", 0),
+            0u);
+  ReconstructOptions blocks;
+  blocks.engine = ComplexEngine::kBlocks;
+  blocks.block_size = 3.0;
+  EXPECT_TRUE(blocks.Validate().has_value());
 }
 
 TEST(FacadeOptions, ReconstructRefusesInvalidOptions) {

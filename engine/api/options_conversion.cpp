@@ -33,6 +33,25 @@ Status ValidateBlockMargin(int block_margin) {
   return Error{ErrorCode::kInvalidOptions, kStage, "block_margin: " + s.error().message};
 }
 
+pipeline::Engine ToEngine(ComplexEngine engine) {
+  return engine == ComplexEngine::kBlocks ? pipeline::Engine::kBlocks
+                                          : pipeline::Engine::kMonolithic;
+}
+
+/// The engine's own checks of the block fields (pipeline::ValidateBlockSize, the block side
+/// against the engine, the block margin), named as the facade's.
+Status ValidateBlocks(ComplexEngine engine, double block_size, int block_margin) {
+  Status s = pipeline::ValidateBlockSize(block_size);
+  if (s) {
+    s = pipeline::ValidateEngineBlockSize(
+        ToEngine(engine),
+        block_size,
+        {.block_size = "block_size", .detection_block_size = "detection.block_size"});
+  }
+  if (!s) return Error{ErrorCode::kInvalidOptions, kStage, s.error().message};
+  return ValidateBlockMargin(block_margin);
+}
+
 /// The engine's own check of the quality fields, named as the facade's.
 Status ValidateQuality(const QualityOptions& quality) {
   pipeline::SurfaceQualityOptions o;
@@ -92,8 +111,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.solver.backend = SolverBackendName(options.solver.backend);
   o.solver.time_limit_seconds = options.solver.time_limit_seconds;
   o.scene_mode = options.scene_mode;
-  o.engine = options.engine == ComplexEngine::kBlocks ? pipeline::Engine::kBlocks
-                                                      : pipeline::Engine::kMonolithic;
+  o.engine = ToEngine(options.engine);
   o.blocks.block_size = options.block_size;
   o.blocks.support.margin_blocks = options.block_margin;
   o.box_margin = options.box_margin;
@@ -199,14 +217,7 @@ Status ReconstructOptions::Validate() const noexcept {
     return Bad("solver.time_limit_seconds", "must be finite and >= 0");
   }
   if (!ComplexEngineName(engine)[0]) return Bad("engine", "is not a ComplexEngine");
-  if (!(std::isfinite(block_size) && block_size >= 0.0)) {
-    return Bad("block_size", "must be finite and >= 0");
-  }
-  if (engine == ComplexEngine::kMonolithic && block_size != 0.0) {
-    return Bad("block_size", "applies to the blocks engine only (per-block detection: "
-                             "detection.block_size)");
-  }
-  if (Status s = api::ValidateBlockMargin(block_margin); !s) return s;
+  if (Status s = api::ValidateBlocks(engine, block_size, block_margin); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
   if (Status s = api::ValidateQuality(quality); !s) return s;
   if (Status s = api::ValidateThreads(num_threads); !s) return s;

@@ -36,10 +36,13 @@ std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
 
 }  // namespace
 
+Status ValidateBlockSize(double block_size) {
+  if (std::isfinite(block_size) && block_size >= 0.0) return {};
+  return Error{ErrorCode::kInvalidOptions, kStage, "block_size must be finite and >= 0"};
+}
+
 Status BlockPartitionOptions::Validate() const {
-  if (!(block_size >= 0.0) || !std::isfinite(block_size)) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "block_size must be >= 0 (0 = automatic)"};
-  }
+  if (Status s = ValidateBlockSize(block_size); !s) return s;
   if (Status s = size_rule.Validate(); !s) return s;
   if (Status s = support.Validate(); !s) return s;
   return complex.Validate();

@@ -19,6 +19,10 @@
 
 namespace linesurf::pipeline {
 
+/// The rule for the side of the base blocks (scene units): finite and >= 0, 0 = automatic.
+/// Every options layer that holds one checks it here.
+[[nodiscard]] Status ValidateBlockSize(double block_size);
+
 struct BlockPartitionOptions {
   /// Side of the base blocks (scene units, >= 0); 0 = automatic (`size_rule`).
   double block_size = 0.0;

@@ -79,6 +79,15 @@ void ConfigureStageContext(const ReconstructOptions& options, const RunContext& 
 
 }  // namespace
 
+Status ValidateEngineBlockSize(Engine engine, double block_size, const BlockFieldNames& names) {
+  if (engine != Engine::kMonolithic || block_size == 0.0) return {};
+  return Error{ErrorCode::kInvalidOptions,
+               "reconstruct_options",
+               std::string(names.block_size) +
+                   " applies to the blocks engine only (per-block detection: " +
+                   names.detection_block_size + ")"};
+}
+
 Status ReconstructOptions::Validate() const {
   if (Status s = sanitize.Validate(); !s) return s;
   if (!use_given_planes) {
@@ -89,11 +98,7 @@ Status ReconstructOptions::Validate() const {
   if (Status s = complex.Validate(); !s) return s;
   if (Status s = blocks.Validate(); !s) return s;
   if (Status s = detection_blocks.Validate(); !s) return s;
-  if (engine == Engine::kMonolithic && blocks.block_size != 0.0) {
-    return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
-                 "blocks.block_size applies to the blocks engine only (per-block detection: "
-                 "planes.block_size)"};
-  }
+  if (Status s = ValidateEngineBlockSize(engine, blocks.block_size); !s) return s;
   if (Status s = quality.Validate(); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",

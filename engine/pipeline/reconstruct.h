@@ -40,6 +40,20 @@ enum class Engine {
   kBlocks,
 };
 
+/// How an options struct spells the block fields, for the messages of ValidateEngineBlockSize
+/// (the engine's spelling by default; the facade passes its own).
+struct BlockFieldNames {
+  const char* block_size = "blocks.block_size";            ///< the partition's block side
+  const char* detection_block_size = "planes.block_size";  ///< per-block detection's cube side
+};
+
+/// The rule tying the partition's block side to the engine, for every options layer: a block
+/// side (0 = automatic) is given only to the blocks engine, since the monolithic one has no
+/// blocks; per-block detection has its own cube side, which the message points to.
+[[nodiscard]] Status ValidateEngineBlockSize(Engine engine,
+                                             double block_size,
+                                             const BlockFieldNames& names = {});
+
 struct ReconstructOptions {
   SanitizeOptions sanitize;
   /// Plane detection (ignored with use_given_planes). Its seed is replaced by `seed`.
