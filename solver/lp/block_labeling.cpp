@@ -211,15 +211,7 @@ class BlockSolver {
         ImproveByGroupMoves(energy_, options_.group_move_passes, result.labels);
     Log("local search " + std::to_string(result.local_search_flips) + " flips, group moves " +
         std::to_string(result.group_move_changes) + " changes");
-    WindowPolishOptions windows;
-    windows.window_cells = options_.window_cells;
-    windows.max_nodes = options_.window_max_nodes;
-    windows.max_windows = options_.window_max_count;
-    const WindowPolishStats polished =
-        PolishInWindows(energy_, result.relaxed, windows, ctx_, result.labels);
-    result.windows = polished.windows;
-    result.improved_windows = polished.improved_windows;
-    result.window_changes = polished.changed_cells;
+    const WindowPolishStats polished = PolishResultInWindows(energy_, options_, ctx_, result);
     Log("windows: " + std::to_string(polished.windows) + ", " +
         std::to_string(polished.improved_windows) + " improved");
     result.labels_objective = energy_.Evaluate(std::span<const std::uint8_t>(result.labels));

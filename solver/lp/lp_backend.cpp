@@ -75,22 +75,14 @@ bool Improve(const EnergyInput& energy, const LabelingOptions& options, const Ru
   result.local_search_flips = ImproveLabels(energy, options.local_search_passes, result.labels);
   result.group_move_changes =
       ImproveByGroupMoves(energy, options.group_move_passes, result.labels);
-  WindowPolishOptions windows;
-  if (result.backend != "cbc" && result.backend != "maxflow") {
-    windows.window_cells = options.window_cells;
-    windows.max_nodes = options.window_max_nodes;
-    windows.max_windows = options.window_max_count;
-  }
+  // The exact backends (cbc, maxflow) solve the integer program themselves: no windows.
+  const bool exact = result.backend == "cbc" || result.backend == "maxflow";
   const WindowPolishStats polished =
-      PolishInWindows(energy, result.relaxed, windows, ctx, result.labels);
-  result.windows = polished.windows;
-  result.improved_windows = polished.improved_windows;
-  result.window_changes = polished.changed_cells;
+      exact ? WindowPolishStats{} : PolishResultInWindows(energy, options, ctx, result);
   result.labels_objective =
       result.local_search_flips + result.group_move_changes + result.window_changes == 0
           ? result.rounded_objective
           : energy.Evaluate(std::span<const std::uint8_t>(result.labels));
-  const bool exact = result.backend == "cbc" || result.backend == "maxflow";
   result.method = result.backend + (exact ? " integer program" : " lp, rounding");
   if (options.local_search_passes > 0) result.method += ", local search";
   if (options.group_move_passes > 0) result.method += ", group moves";

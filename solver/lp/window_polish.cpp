@@ -114,4 +114,20 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
   return stats;
 }
 
+WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
+                                        const LabelingOptions& options,
+                                        const RunContext& ctx,
+                                        LabelingResult& result) {
+  WindowPolishOptions windows;
+  windows.window_cells = options.window_cells;
+  windows.max_nodes = options.window_max_nodes;
+  windows.max_windows = options.window_max_count;
+  const WindowPolishStats polished =
+      PolishInWindows(energy, result.relaxed, windows, ctx, result.labels);
+  result.windows = polished.windows;
+  result.improved_windows = polished.improved_windows;
+  result.window_changes = polished.changed_cells;
+  return polished;
+}
+
 }  // namespace linesurf::solver

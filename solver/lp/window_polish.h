@@ -8,6 +8,7 @@
 
 #include "engine/core/run_context.h"
 #include "solver/energy/energy_input.h"
+#include "solver/lp/lp_backend.h"
 
 #include <cstdint>
 #include <span>
@@ -44,5 +45,13 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
                                   const WindowPolishOptions& options,
                                   const RunContext& ctx,
                                   std::vector<std::uint8_t>& labels);
+
+/// PolishInWindows as a labelling runs it: the windows of `options` (window_cells,
+/// window_max_nodes, window_max_count) on result.labels, seeded by result.relaxed; the counts go
+/// to result.windows, improved_windows and window_changes.
+WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
+                                        const LabelingOptions& options,
+                                        const RunContext& ctx,
+                                        LabelingResult& result);
 
 }  // namespace linesurf::solver
