@@ -30,13 +30,7 @@ double TrivialBound(const ReducedEnergy& r) {
 
 TEST(DualAscent, BoundsTheLpOptimumOfRandomEnergies) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
-    testing::RandomEnergySpec spec;
-    spec.num_cells = 30;
-    spec.num_pairs = 50;
-    spec.num_structural = 8;
-    spec.num_parity = 10;
-    spec.seed = seed;
-    const EnergyInput e = testing::RandomEnergy(spec);
+    const EnergyInput e = testing::SmallRandomEnergy(seed);
     const ReducedEnergy reduced = ReduceEnergy(e);
     const DualAscentResult ascent = DualAscentBound(reduced, 50, 0.0);
     EXPECT_LE(ascent.bound, LpOptimum(e) + kTolerance) << "seed " << seed;

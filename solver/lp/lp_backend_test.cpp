@@ -265,13 +265,7 @@ TEST(SolveLabeling, PdhgIsCloseToClpOnAGridEnergy) {
 
 TEST(SolveLabeling, BandIsAnUpperBoundOfTheFullLpAndKeepsFixes) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    testing::RandomEnergySpec spec;
-    spec.num_cells = 30;
-    spec.num_pairs = 50;
-    spec.num_structural = 8;
-    spec.num_parity = 10;
-    spec.seed = seed;
-    const EnergyInput e = testing::RandomEnergy(spec);
+    const EnergyInput e = testing::SmallRandomEnergy(seed);
     const LabelingResult clp = MustSolve(e, "clp");
     const LabelingResult band = MustSolve(e, "band");
     EXPECT_EQ(band.backend.rfind("band+", 0), 0u) << band.backend;

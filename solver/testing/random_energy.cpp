@@ -50,6 +50,16 @@ EnergyInput RandomEnergy(const RandomEnergySpec& spec) {
   return e;
 }
 
+EnergyInput SmallRandomEnergy(std::uint64_t seed) {
+  RandomEnergySpec spec;
+  spec.num_cells = 30;
+  spec.num_pairs = 50;
+  spec.num_structural = 8;
+  spec.num_parity = 10;
+  spec.seed = seed;
+  return RandomEnergy(spec);
+}
+
 EnergyInput GridEnergy(const GridEnergySpec& spec) {
   Rng rng(MixSeed(spec.seed, RngStage::kSynth, 0x6e1d));
   const int nx = spec.nx, ny = spec.ny, nz = spec.nz;

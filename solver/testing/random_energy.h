@@ -22,6 +22,10 @@ struct RandomEnergySpec {
 /// (parity) distinct cells with alternating signs.
 [[nodiscard]] EnergyInput RandomEnergy(const RandomEnergySpec& spec);
 
+/// RandomEnergy of 30 cells, 50 pairs, 8 structural and 10 parity groups (default fixed
+/// fraction) for `seed`: the energy the bound and band tests compare with Clp's LP optimum.
+[[nodiscard]] EnergyInput SmallRandomEnergy(std::uint64_t seed);
+
 /// A grid of nx*ny*nz cells shaped like the labelling energy of a complex: full inside a few
 /// balls (textural evidence near their surface), pairwise visibility terms between face
 /// neighbours, structural groups of 3 cells along axes, parity groups on 2x2 cell edges; cells on
