@@ -16,6 +16,11 @@
 namespace linesurf {
 namespace {
 
+/// Blocks of the house for the blocks-engine test: several blocks, a margin other than the
+/// default.
+constexpr double kHouseBlockSize = 6.0;
+constexpr int kHouseBlockMargin = 2;
+
 /// Owns a linesurf_error* and frees it.
 struct ErrorHolder {
   linesurf_error* error = nullptr;
@@ -88,6 +93,69 @@ TEST(CApi, MissingFileIsNamed) {
   EXPECT_NE(e.Message().find("/nonexistent/x.json"), std::string::npos) << e.Message();
 }
 
+/// The C result holds the C++ result's mesh and planes, value for value.
+void ExpectSameMesh(const linesurf_result* result, const ReconstructResult& cpp) {
+  ASSERT_EQ(linesurf_result_num_vertices(result), cpp.mesh.vertices.size());
+  ASSERT_EQ(linesurf_result_num_faces(result), cpp.mesh.NumFaces());
+  ASSERT_EQ(linesurf_result_num_planes(result), cpp.planes.size());
+  const double* v = linesurf_result_vertices(result);
+  for (std::size_t i = 0; i < cpp.mesh.vertices.size(); ++i) {
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(v[3 * i + a], cpp.mesh.vertices[i][a]);
+  }
+  const uint32_t* offsets = linesurf_result_face_offsets(result);
+  const uint32_t* indices = linesurf_result_face_indices(result);
+  EXPECT_EQ(std::vector<uint32_t>(offsets, offsets + cpp.mesh.face_offsets.size()),
+            cpp.mesh.face_offsets);
+  EXPECT_EQ(std::vector<uint32_t>(indices, indices + cpp.mesh.face_indices.size()),
+            cpp.mesh.face_indices);
+}
+
+/// The message linesurf_reconstruct gives for `options` on a one-segment scene ("" on success).
+std::string ReconstructMessage(const linesurf_options* options) {
+  const double segment[6] = {0, 0, 0, 1, 0, 0};
+  const double viewpoint[3] = {0, -5, 0};
+  const uint32_t observation[2] = {0, 0};
+  linesurf_scene* scene = linesurf_scene_create(segment, 1, viewpoint, 1, observation, 1, nullptr);
+  EXPECT_NE(scene, nullptr);
+  ErrorHolder e;
+  linesurf_result* result = linesurf_reconstruct(scene, options, nullptr, &e.error);
+  linesurf_result_free(result);
+  linesurf_scene_free(scene);
+  if (e.error == nullptr) return std::string();
+  EXPECT_EQ(linesurf_error_code(e.error), LINESURF_ERROR_INVALID_OPTIONS);
+  return e.Message();
+}
+
+// engine, block_size and block_margin reach the facade, which refuses bad values with its own
+// messages (FacadeOptions.BlockFieldsFollowTheEnginesRulesUnderTheFacadesNames).
+TEST(CApi, BlockOptionsAreCheckedByTheFacade) {
+  linesurf_options* options = linesurf_options_create();
+  ASSERT_NE(options, nullptr);
+  {
+    ErrorHolder e;
+    EXPECT_EQ(linesurf_options_set_string(options, "engine", "voxels", &e.error),
+              LINESURF_ERROR_INVALID_OPTIONS);
+    EXPECT_EQ(e.Message(), "options: 'voxels' is not a value of engine");
+  }
+  {
+    ErrorHolder e;
+    EXPECT_EQ(linesurf_options_set_number(options, "block_margin", 1.5, &e.error),
+              LINESURF_ERROR_INVALID_OPTIONS);
+    EXPECT_NE(e.Message().find("block_margin"), std::string::npos) << e.Message();
+  }
+  ASSERT_EQ(linesurf_options_set_number(options, "block_size", 3.0, nullptr), LINESURF_OK);
+  EXPECT_EQ(ReconstructMessage(options),
+            "options: block_size applies to the blocks engine only (per-block detection: "
+            "detection.block_size)");
+  ASSERT_EQ(linesurf_options_set_string(options, "engine", "blocks", nullptr), LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_number(options, "block_size", -1.0, nullptr), LINESURF_OK);
+  EXPECT_EQ(ReconstructMessage(options), "options: block_size must be finite and >= 0");
+  ASSERT_EQ(linesurf_options_set_number(options, "block_size", 3.0, nullptr), LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_number(options, "block_margin", 65.0, nullptr), LINESURF_OK);
+  EXPECT_EQ(ReconstructMessage(options).rfind("options: block_margin: ", 0), 0u);
+  linesurf_options_free(options);
+}
+
 struct Calls {
   int progress = 0;
   int cancel_polls = 0;
@@ -122,19 +190,7 @@ TEST(CApi, HouseMatchesTheCppFacade) {
   ASSERT_TRUE(read.has_value());
   const auto cpp = Reconstruct(read->scene.View(), cpp_options);
   ASSERT_TRUE(cpp.has_value()) << cpp.error().ToString();
-  ASSERT_EQ(linesurf_result_num_vertices(result), cpp->mesh.vertices.size());
-  ASSERT_EQ(linesurf_result_num_faces(result), cpp->mesh.NumFaces());
-  ASSERT_EQ(linesurf_result_num_planes(result), cpp->planes.size());
-  const double* v = linesurf_result_vertices(result);
-  for (std::size_t i = 0; i < cpp->mesh.vertices.size(); ++i) {
-    for (int a = 0; a < 3; ++a) EXPECT_EQ(v[3 * i + a], cpp->mesh.vertices[i][a]);
-  }
-  const uint32_t* offsets = linesurf_result_face_offsets(result);
-  const uint32_t* indices = linesurf_result_face_indices(result);
-  EXPECT_EQ(std::vector<uint32_t>(offsets, offsets + cpp->mesh.face_offsets.size()),
-            cpp->mesh.face_offsets);
-  EXPECT_EQ(std::vector<uint32_t>(indices, indices + cpp->mesh.face_indices.size()),
-            cpp->mesh.face_indices);
+  ExpectSameMesh(result, *cpp);
   EXPECT_EQ(linesurf_result_planes(result)[3], cpp->planes[0].normal[0]);
 
   const auto dir = testing::FreshTempDir();
@@ -144,6 +200,44 @@ TEST(CApi, HouseMatchesTheCppFacade) {
   EXPECT_TRUE(testing::Slurp(dir / "c.ply") == testing::Slurp(dir / "cpp.ply"));
   EXPECT_EQ(linesurf_result_write_mesh(result, (dir / "m.xyz").c_str(), 0, nullptr),
             LINESURF_ERROR_INVALID_INPUT);
+
+  linesurf_result_free(result);
+  linesurf_options_free(options);
+  linesurf_scene_free(scene);
+}
+
+// The blocks engine through the C API: the mesh of the C++ facade with the same options, and
+// (so that the options must have arrived) not the mesh of the default engine.
+TEST(CApi, BlocksEngineMatchesTheCppFacade) {
+  const std::string house = testing::ExampleHouseInput().string();
+  ErrorHolder e;
+  linesurf_scene* scene = linesurf_scene_read(house.c_str(), nullptr, nullptr, &e.error);
+  ASSERT_NE(scene, nullptr) << e.Message();
+  linesurf_options* options = linesurf_options_create();
+  ASSERT_EQ(linesurf_options_set_string(options, "scene_mode", "exterior", nullptr), LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_string(options, "engine", "blocks", nullptr), LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_number(options, "block_size", kHouseBlockSize, nullptr),
+            LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_number(options, "block_margin", kHouseBlockMargin, nullptr),
+            LINESURF_OK);
+  linesurf_result* result = linesurf_reconstruct(scene, options, nullptr, &e.error);
+  ASSERT_NE(result, nullptr) << e.Message();
+
+  const auto read = ReadScene(house);
+  ASSERT_TRUE(read.has_value());
+  ReconstructOptions cpp_options;
+  cpp_options.scene_mode = SceneMode::kExterior;
+  const auto monolithic = Reconstruct(read->scene.View(), cpp_options);
+  cpp_options.engine = ComplexEngine::kBlocks;
+  cpp_options.block_size = kHouseBlockSize;
+  cpp_options.block_margin = kHouseBlockMargin;
+  const auto blocks = Reconstruct(read->scene.View(), cpp_options);
+  ASSERT_TRUE(monolithic.has_value()) << monolithic.error().ToString();
+  ASSERT_TRUE(blocks.has_value()) << blocks.error().ToString();
+  EXPECT_EQ(blocks->stats.engine, "blocks");
+  EXPECT_GT(blocks->stats.blocks, 1u);
+  ExpectSameMesh(result, *blocks);
+  EXPECT_NE(blocks->mesh.vertices, monolithic->mesh.vertices);
 
   linesurf_result_free(result);
   linesurf_options_free(options);
