@@ -40,12 +40,13 @@ void ThrowIfInvalid(const Status& s) {
   if (!s) throw LinesurfException(s.error());
 }
 
-/// The engine scene of an owned scene (residuals and extra fields kept); an index error names
-/// `path` when given (the file the scene goes to).
+/// The engine scene of an owned scene (residuals, extra fields and empty memberships kept); an
+/// index error names `path` when given (the file the scene goes to).
 Scene ToEngineSceneData(const SceneData& scene, const std::string& path = {}) {
   Expected<Scene> engine_scene = api::ToEngineScene(scene.View(), scene.residuals);
   Scene out = path.empty() ? ValueOrThrow(std::move(engine_scene))
                            : ValueOrThrowFor(std::move(engine_scene), path);
+  if (scene.has_memberships) out.memberships.resize(out.NumSegments());
   out.extra_fields = scene.extra_fields;
   return out;
 }
@@ -157,9 +158,7 @@ Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept {
 
 Status WriteScene(const std::string& path, const SceneData& scene) noexcept {
   return CatchAll("write_scene", [&] {
-    Scene engine_scene = ValueOrThrowFor(api::ToEngineScene(scene.View(), scene.residuals), path);
-    engine_scene.extra_fields = scene.extra_fields;
-    ThrowIfInvalid(io::WriteReferenceJson(engine_scene, path));
+    ThrowIfInvalid(io::WriteReferenceJson(ToEngineSceneData(scene, path), path));
   });
 }
 

@@ -294,6 +294,36 @@ TEST(FacadeIo, SceneRoundTripsThroughWriteScene) {
   }
 }
 
+// Membership lists without a membership or a plane (reference JSON: empty plane_index lists, no
+// planes) are a state of the scene: read, sanitised and written back; without them nothing is
+// invented.
+TEST(FacadeIo, EmptyMembershipListsWithoutPlanesRoundTrip) {
+  SceneData scene;
+  scene.segments = {{{0, 0, 0}, {2, 0, 0}}, {{0, 0, 1}, {0, 0, 3}}};
+  scene.viewpoints = {{0, 5, 0}};
+  scene.observations = {{0, 0}, {1, 0}};
+  scene.has_memberships = true;
+  const auto dir = testing::FreshTempDir();
+  ASSERT_TRUE(WriteScene((dir / "a.json").string(), scene).has_value());
+  const std::string json = Slurp(dir / "a.json");
+  EXPECT_NE(json.find("\"plane_index\": []}"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"planes\": []"), std::string::npos) << json;
+  const auto read = ReadScene((dir / "a.json").string());
+  ASSERT_TRUE(read.has_value()) << read.error().ToString();
+  EXPECT_TRUE(read->scene.has_memberships);
+  EXPECT_TRUE(read->scene.memberships.empty());
+  const auto sane = SanitizeScene(read->scene);
+  ASSERT_TRUE(sane.has_value()) << sane.error().ToString();
+  EXPECT_TRUE(sane->scene.has_memberships);
+
+  scene.has_memberships = false;
+  ASSERT_TRUE(WriteScene((dir / "b.json").string(), scene).has_value());
+  EXPECT_EQ(Slurp(dir / "b.json").find("plane"), std::string::npos);
+  const auto bare = ReadScene((dir / "b.json").string());
+  ASSERT_TRUE(bare.has_value()) << bare.error().ToString();
+  EXPECT_FALSE(bare->scene.has_memberships);
+}
+
 TEST(FacadeInput, SanitizeSceneDropsBadSegmentsAndMapsTheRest) {
   SceneData scene;
   scene.segments = {{{0, 0, 0}, {1, 0, 0}},

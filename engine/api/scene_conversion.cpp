@@ -127,6 +127,7 @@ SceneData ToSceneData(const Scene& scene) {
                                             static_cast<std::uint32_t>(m.planes[k].value())});
     }
   }
+  data.has_memberships = scene.HasMemberships();
   data.residuals = scene.residuals;
   data.extra_fields = scene.extra_fields;
   return data;

@@ -78,6 +78,38 @@ std::size_t Count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// Lines that say "on no plane" (empty plane_index lists) in a file without planes: convert
+// keeps the lists (the reference's reconstruction requires the key on every line) and the
+// empty plane list, with and without --sanitize, and converting the output again gives the same
+// bytes (issue 13: the lists were dropped).
+TEST_F(CliIo, ConvertKeepsEmptyPlaneIndexListsWithoutPlanes) {
+  const auto path = WriteText(dir_ / "unassigned.json", R"({"lines": [
+    {"pt1": [0, 0, 0], "pt2": [2, 0, 0], "pt_views": [[0, 5, 0]], "plane_index": []},
+    {"pt1": [0, 0, 1], "pt2": [0, 0, 3], "pt_views": [[0, 5, 0]]}]})");
+  for (const std::string flags : {"", "--sanitize "}) {
+    const CliRun r = RunLinesurf(
+        "convert " + flags + Quote(path.string()) + " -o " + Quote((dir_ / "o.json").string()),
+        dir_);
+    ASSERT_EQ(r.exit_code, 0) << flags << r.err;
+    const std::string json = Slurp(dir_ / "o.json");
+    EXPECT_EQ(Count(json, "\"plane_index\": []"), 2u) << flags << json;
+    EXPECT_EQ(Count(json, "\"planes\": []"), 1u) << flags << json;
+    const CliRun again = RunLinesurf(
+        "convert " + Quote((dir_ / "o.json").string()) + " -o " + Quote((dir_ / "p.json").string()),
+        dir_);
+    ASSERT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(json, Slurp(dir_ / "p.json")) << flags;
+  }
+  // A file without plane_index keys or planes stays without them.
+  const auto bare = WriteText(
+      dir_ / "bare.json", R"({"lines": [{"pt1": [0, 0, 0], "pt2": [2, 0, 0], "pt_views": []}]})");
+  const CliRun r = RunLinesurf(
+      "convert " + Quote(bare.string()) + " -o " + Quote((dir_ / "b.json").string()), dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string json = Slurp(dir_ / "b.json");
+  EXPECT_EQ(json.find("plane"), std::string::npos) << json;
+}
+
 TEST_F(CliIo, DetectWritesPlanesVertexGroupsAndAReport) {
   const CliRun synth =
       RunLinesurf("-q synth cube --seed 1 -o " + Quote((dir_ / "cube").string()), dir_);

@@ -70,6 +70,11 @@ struct SceneData {
   std::vector<Plane> planes;
   /// Sorted by segment, then by position in the file.
   std::vector<Membership> memberships;
+  /// Every segment has a membership list, possibly empty: ReadScene sets it for a reference
+  /// JSON with `planes` or `plane_index` keys (docs/formats.md). Kept for writing back, so that
+  /// WriteScene writes `plane_index` for every line (and `planes`) even when this scene has no
+  /// membership and no plane, as the file had them. Planes imply it.
+  bool has_memberships = false;
   /// Per observation, when the file carries them (reference JSON residual_per_pt_view: the 2D
   /// endpoints of the segment in that image, pixels); empty otherwise. Kept for writing back.
   std::vector<std::array<double, 4>> residuals;
