@@ -156,6 +156,21 @@ TEST(CApi, BlockOptionsAreCheckedByTheFacade) {
   linesurf_options_free(options);
 }
 
+/// The example house as a C scene, with C options for an exterior scene (the C++ side of the
+/// comparisons uses SceneMode::kExterior); both freed at the end of the test.
+struct CHouse {
+  std::string path = testing::ExampleHouseInput().string();
+  linesurf_scene* scene = linesurf_scene_read(path.c_str(), nullptr, nullptr, nullptr);
+  linesurf_options* options = linesurf_options_create();
+  CHouse() { linesurf_options_set_string(options, "scene_mode", "exterior", nullptr); }
+  CHouse(const CHouse&) = delete;
+  CHouse& operator=(const CHouse&) = delete;
+  ~CHouse() {
+    linesurf_options_free(options);
+    linesurf_scene_free(scene);
+  }
+};
+
 struct Calls {
   int progress = 0;
   int cancel_polls = 0;
@@ -163,12 +178,9 @@ struct Calls {
 };
 
 TEST(CApi, HouseMatchesTheCppFacade) {
-  const std::string house = testing::ExampleHouseInput().string();
+  const CHouse house;
+  ASSERT_NE(house.scene, nullptr);
   ErrorHolder e;
-  linesurf_scene* scene = linesurf_scene_read(house.c_str(), nullptr, nullptr, &e.error);
-  ASSERT_NE(scene, nullptr) << e.Message();
-  linesurf_options* options = linesurf_options_create();
-  ASSERT_EQ(linesurf_options_set_string(options, "scene_mode", "exterior", &e.error), LINESURF_OK);
   Calls calls;
   linesurf_callbacks callbacks{};
   callbacks.on_progress = [](const char*, double, void* user) {
@@ -179,14 +191,14 @@ TEST(CApi, HouseMatchesTheCppFacade) {
     return 0;
   };
   callbacks.user_data = &calls;
-  linesurf_result* result = linesurf_reconstruct(scene, options, &callbacks, &e.error);
+  linesurf_result* result = linesurf_reconstruct(house.scene, house.options, &callbacks, &e.error);
   ASSERT_NE(result, nullptr) << e.Message();
   EXPECT_GT(calls.progress, 0);
   EXPECT_GT(calls.cancel_polls, 0);
 
   ReconstructOptions cpp_options;
   cpp_options.scene_mode = SceneMode::kExterior;
-  const auto read = ReadScene(house);
+  const auto read = ReadScene(house.path);
   ASSERT_TRUE(read.has_value());
   const auto cpp = Reconstruct(read->scene.View(), cpp_options);
   ASSERT_TRUE(cpp.has_value()) << cpp.error().ToString();
@@ -200,30 +212,25 @@ TEST(CApi, HouseMatchesTheCppFacade) {
   EXPECT_TRUE(testing::Slurp(dir / "c.ply") == testing::Slurp(dir / "cpp.ply"));
   EXPECT_EQ(linesurf_result_write_mesh(result, (dir / "m.xyz").c_str(), 0, nullptr),
             LINESURF_ERROR_INVALID_INPUT);
-
   linesurf_result_free(result);
-  linesurf_options_free(options);
-  linesurf_scene_free(scene);
 }
 
 // The blocks engine through the C API: the mesh of the C++ facade with the same options, and
 // (so that the options must have arrived) not the mesh of the default engine.
 TEST(CApi, BlocksEngineMatchesTheCppFacade) {
-  const std::string house = testing::ExampleHouseInput().string();
-  ErrorHolder e;
-  linesurf_scene* scene = linesurf_scene_read(house.c_str(), nullptr, nullptr, &e.error);
-  ASSERT_NE(scene, nullptr) << e.Message();
-  linesurf_options* options = linesurf_options_create();
-  ASSERT_EQ(linesurf_options_set_string(options, "scene_mode", "exterior", nullptr), LINESURF_OK);
+  const CHouse house;
+  ASSERT_NE(house.scene, nullptr);
+  linesurf_options* options = house.options;
   ASSERT_EQ(linesurf_options_set_string(options, "engine", "blocks", nullptr), LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_number(options, "block_size", kHouseBlockSize, nullptr),
             LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_number(options, "block_margin", kHouseBlockMargin, nullptr),
             LINESURF_OK);
-  linesurf_result* result = linesurf_reconstruct(scene, options, nullptr, &e.error);
+  ErrorHolder e;
+  linesurf_result* result = linesurf_reconstruct(house.scene, options, nullptr, &e.error);
   ASSERT_NE(result, nullptr) << e.Message();
 
-  const auto read = ReadScene(house);
+  const auto read = ReadScene(house.path);
   ASSERT_TRUE(read.has_value());
   ReconstructOptions cpp_options;
   cpp_options.scene_mode = SceneMode::kExterior;
@@ -238,24 +245,17 @@ TEST(CApi, BlocksEngineMatchesTheCppFacade) {
   EXPECT_GT(blocks->stats.blocks, 1u);
   ExpectSameMesh(result, *blocks);
   EXPECT_NE(blocks->mesh.vertices, monolithic->mesh.vertices);
-
   linesurf_result_free(result);
-  linesurf_options_free(options);
-  linesurf_scene_free(scene);
 }
 
 TEST(CApi, CancelCallbackCancels) {
-  const std::string house = testing::ExampleHouseInput().string();
-  linesurf_scene* scene = linesurf_scene_read(house.c_str(), nullptr, nullptr, nullptr);
-  ASSERT_NE(scene, nullptr);
-  linesurf_options* options = linesurf_options_create();
+  const CHouse house;
+  ASSERT_NE(house.scene, nullptr);
   linesurf_callbacks callbacks{};
   callbacks.is_cancelled = [](void*) { return 1; };
   ErrorHolder e;
-  EXPECT_EQ(linesurf_reconstruct(scene, options, &callbacks, &e.error), nullptr);
+  EXPECT_EQ(linesurf_reconstruct(house.scene, house.options, &callbacks, &e.error), nullptr);
   EXPECT_EQ(linesurf_error_code(e.error), LINESURF_ERROR_CANCELLED) << e.Message();
-  linesurf_options_free(options);
-  linesurf_scene_free(scene);
 }
 
 }  // namespace
