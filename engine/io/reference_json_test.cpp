@@ -145,8 +145,6 @@ TEST_P(ReferenceJsonBad, FailsWithInvalidInputNamingTheProblem) {
       << scene.error().message;
 }
 
-constexpr const char* kPlane = R"({"inlier": [0, 0, 0], "normal": [0, 0, 1]})";
-
 INSTANTIATE_TEST_SUITE_P(
     Cases, ReferenceJsonBad,
     ::testing::Values(

@@ -19,7 +19,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-const Box3 kBox(Vec3(-2.0, -2.0, -2.0), Vec3(2.0, 2.1, 1.9));
+const Box3 kBox{Vec3(-2.0, -2.0, -2.0), Vec3(2.0, 2.1, 1.9)};
 
 /// Random planes through the box with textural inliers, creases of consecutive planes
 /// (structural), segments on no plane, and viewpoints inside and outside the box.
@@ -297,7 +297,7 @@ TEST(ComputeBlockEvidence, RaysThroughBlockEdgesAndAlongFacesCrossSeams) {
   for (int i = 0; i < 2; ++i) {
     scene.observations.AddRow(std::vector<ViewpointId>{ViewpointId(std::size_t{0})});
   }
-  const auto grid = partition::BlockGrid::Create(Box3(Vec3(-2, -2, -2), Vec3(2, 2, 2)), 2.0);
+  const auto grid = partition::BlockGrid::Create(Box3{Vec3(-2, -2, -2), Vec3(2, 2, 2)}, 2.0);
   ASSERT_TRUE(grid);
   auto cx = partition::BuildBlockComplexes(*grid, {}, partition::RegionsFromBlockLists({}), {}, {});
   ASSERT_TRUE(cx);

@@ -41,7 +41,7 @@ Scene CubeScene() {
   return scene;
 }
 
-Box3 SceneBox() { return Box3(Vec3::Constant(-1.0), Vec3::Constant(3.0)); }
+Box3 SceneBox() { return Box3{Vec3::Constant(-1.0), Vec3::Constant(3.0)}; }
 
 BlockPartition Build(const Scene& scene, const BlockPartitionOptions& options) {
   Expected<BlockPartition> p = BuildBlockPartition(scene, SceneBox(), options, {});

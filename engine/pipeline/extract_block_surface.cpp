@@ -259,7 +259,8 @@ MergedVertices MergeVertices(const BlockComplexes& cx,
     }
   }
   const PointGrid grid(h, entries);
-  for (const auto& [cell, i] : entries) {
+  for (const auto& entry : entries) {
+    const std::uint32_t i = entry.second;  // named: clang 14 cannot capture a structured binding
     const Vec3& p = corners[first[i]]->point;
     grid.ForEachNear(
         p - Vec3::Constant(distance), p + Vec3::Constant(distance), [&](std::uint32_t j) {

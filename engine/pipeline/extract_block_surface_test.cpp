@@ -156,7 +156,7 @@ void ExpectSameMesh(const PolygonMesh& a, const PolygonMesh& b) {
 // Must show 1, extraction half: one block gives exactly ExtractSurface's mesh on the monolithic
 // complex of the same box and planes.
 TEST(ExtractBlockSurface, OneBlockIsExtractSurfaceOfTheMonolithicComplex) {
-  const Box3 box(Vec3(-1.1, -0.9, -1), Vec3(1, 1.2, 0.8));
+  const Box3 box{Vec3(-1.1, -0.9, -1), Vec3(1, 1.2, 0.8)};
   const std::vector<Plane3> planes = RandomPlanes(12, box, 1);
   const BlockComplexes cx = Build(box, 10.0, planes);
   ASSERT_EQ(cx.blocks.size(), 1u);
@@ -190,13 +190,13 @@ TEST(ExtractBlockSurface, OneBlockIsExtractSurfaceOfTheMonolithicComplex) {
 // faces, edges on block edges): labels from the solid, then random labels.
 TEST(ExtractBlockSurface, SolidsOnMultiBlockGridsAreClosedConformingAndHaveTheirVolume) {
   const std::vector<std::vector<Box3>> solids = {
-      {Box3(Vec3(1, 1, 0.5), Vec3(3, 2.5, 2))},  // box building
-      {Box3(Vec3(0.5, 0.5, 0.5), Vec3(3, 1.5, 2)),
-       Box3(Vec3(0.5, 0.5, 0.5), Vec3(1.5, 3, 2))},  // L
-      {Box3(Vec3(0.3, 0.7, 0.2), Vec3(2.2, 3.1, 1.7)),
-       Box3(Vec3(1.3, 0.2, 0.9), Vec3(3.6, 2.2, 3.3))},
+      {Box3{Vec3(1, 1, 0.5), Vec3(3, 2.5, 2)}},  // box building
+      {Box3{Vec3(0.5, 0.5, 0.5), Vec3(3, 1.5, 2)},
+       Box3{Vec3(0.5, 0.5, 0.5), Vec3(1.5, 3, 2)}},  // L
+      {Box3{Vec3(0.3, 0.7, 0.2), Vec3(2.2, 3.1, 1.7)},
+       Box3{Vec3(1.3, 0.2, 0.9), Vec3(3.6, 2.2, 3.3)}},
   };
-  const Box3 box(Vec3(0, 0, 0), Vec3(4, 3.5, 3.5));
+  const Box3 box{Vec3(0, 0, 0), Vec3(4, 3.5, 3.5)};
   for (std::size_t i = 0; i < solids.size(); ++i) {
     SCOPED_TRACE(i);
     const std::vector<Plane3> planes = BoxPlanes(solids[i]);
@@ -220,7 +220,7 @@ TEST(ExtractBlockSurface, SolidsOnMultiBlockGridsAreClosedConformingAndHaveTheir
 // Random planes with random regions: the two sides of most seams differ (T-edges, overlay
 // vertices inside the edges of both sides).
 TEST(ExtractBlockSurface, RandomPlanesAndRegionsGiveClosedConformingSurfaces) {
-  const Box3 box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   StitchStats total;
   std::size_t non_manifold = 0;
   for (std::uint64_t seed = 1; seed < 5; ++seed) {
@@ -270,7 +270,7 @@ std::int64_t EulerCharacteristic(const PolygonMesh& mesh) {
 // of the monolithic cells the stitched surface is the monolithic one, split along block faces:
 // same volume, components and Euler characteristic.
 TEST(ExtractBlockSurface, EveryPlaneInEveryBlockGivesTheMonolithicSurface) {
-  const Box3 box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   for (std::uint64_t seed = 1; seed < 4; ++seed) {
     const std::vector<Plane3> planes = RandomPlanes(8, box, seed);
     const auto mono = partition::BuildCellComplex(box, planes, {}, {});
@@ -301,7 +301,7 @@ TEST(ExtractBlockSurface, EveryPlaneInEveryBlockGivesTheMonolithicSurface) {
 // Exactly degenerate planes: on block faces, through block edges and corners, a plane reaching
 // one side of a face only, a pencil through a line on a block face.
 TEST(ExtractBlockSurface, DegeneratePlanesOnBlockFacesEdgesAndCorners) {
-  const Box3 box(Vec3(0, 0, 0), Vec3(4, 4, 4));
+  const Box3 box{Vec3(0, 0, 0), Vec3(4, 4, 4)};
   std::vector<Plane3> planes = {
       {Vec3(2, 0, 0), Vec3(1, 0, 0)},   // on the faces x = 2
       {Vec3(0, 1, 0), Vec3(0, -1, 0)},  // on y = 1, opposite orientation
@@ -335,7 +335,7 @@ TEST(ExtractBlockSurface, DegeneratePlanesOnBlockFacesEdgesAndCorners) {
 // Vertices on block edges shared by 4 blocks and on corners shared by 8: single full cells
 // around a block corner, touching it (pinched), and the whole grid full.
 TEST(ExtractBlockSurface, CellsMeetingAtBlockEdgesAndCorners) {
-  const Box3 box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+  const Box3 box{Vec3(0, 0, 0), Vec3(2, 2, 2)};
   const std::vector<Plane3> planes = {{Vec3(0.5, 0, 0), Vec3(1, 0, 0)},
                                       {Vec3(0, 1.5, 0), Vec3(0, 1, 0)},
                                       {Vec3(0, 0, 0.7), Vec3(0, 0, 1)}};
@@ -389,7 +389,7 @@ struct RandomCase {
 
 RandomCase MakeRandomCase(std::uint64_t seed) {
   Rng rng(seed * 7919 + 13);
-  const Box3 box(Vec3(0, 0, 0), Vec3(4, 4, 3));
+  const Box3 box{Vec3(0, 0, 0), Vec3(4, 4, 3)};
   std::vector<Plane3> planes;
   const int n = 4 + static_cast<int>(rng.Uniform() * 14);
   for (int i = 0; i < n; ++i) {
@@ -456,8 +456,8 @@ TEST(ExtractBlockSurface, RandomDegenerateConfigurations) {
 TEST(ExtractBlockSurface, MergeCoplanarJoinsFacetsOfOnePlaneAcrossBlockFaces) {
   ExtractOptions merge;
   merge.merge_coplanar = true;
-  const std::vector<Box3> building = {Box3(Vec3(1, 1, 0.5), Vec3(3, 2.5, 2))};
-  const Box3 box(Vec3(0, 0, 0), Vec3(4, 3.5, 3.5));
+  const std::vector<Box3> building = {Box3{Vec3(1, 1, 0.5), Vec3(3, 2.5, 2)}};
+  const Box3 box{Vec3(0, 0, 0), Vec3(4, 3.5, 3.5)};
   for (const double size : {0.5, 1.0, 1.5}) {
     const BlockComplexes cx = Build(box, size, BoxPlanes(building));
     double volume = 0.0;
@@ -481,7 +481,7 @@ TEST(ExtractBlockSurface, MergeCoplanarJoinsFacetsOfOnePlaneAcrossBlockFaces) {
     if (!c.options.outside_full) ExpectValidSurface(r.mesh, c.volume);
   }
   EXPECT_GT(merged_faces, 0u);
-  const Box3 one(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 one{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockComplexes single = Build(one, 10.0, RandomPlanes(8, one, 5));
   double volume = 0.0;
   const std::vector<std::uint8_t> labels = RandomLabels(single, 5, volume);
@@ -494,7 +494,7 @@ TEST(ExtractBlockSurface, MergeCoplanarJoinsFacetsOfOnePlaneAcrossBlockFaces) {
 
 TEST(ExtractBlockSurface, SameMeshForAnyThreadCount) {
   const testing::RealThreadCounts real;
-  const Box3 box(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const std::vector<Plane3> planes = RandomPlanes(12, box, 9);
   const BlockComplexes all = Build(box, 0.5, planes);
   const BlockComplexes cx = Build(box, 0.5, planes, RandomRegions(all, planes.size(), 0.6, 9));
@@ -510,7 +510,7 @@ TEST(ExtractBlockSurface, SameMeshForAnyThreadCount) {
 }
 
 TEST(ExtractBlockSurface, RejectsWrongLabelCount) {
-  const Box3 box(Vec3(0, 0, 0), Vec3(2, 2, 2));
+  const Box3 box{Vec3(0, 0, 0), Vec3(2, 2, 2)};
   const BlockComplexes cx = Build(box, 1.0, {});
   const std::vector<std::uint8_t> labels(3, 0);
   const auto r = ExtractBlockSurface(cx, labels, {}, RunContext{});

@@ -139,7 +139,9 @@ class GridComplexForTest {
     }
     // Edge stars: quadrants around the edge in the (b, c) plane, counter-clockwise.
     for (std::size_t e = 0; e < cx_.NumEdges(); ++e) {
-      const auto& [a, p] = edge_origin_[e];
+      // Named, not a structured binding: clang 14 (sanitizer build) cannot capture one.
+      const int a = edge_origin_[e].first;
+      const auto& p = edge_origin_[e].second;
       const int b = (a + 1) % 3;
       const int c = (a + 2) % 3;
       const std::array<std::array<int, 2>, 4> quadrant_offsets{{{0, 0}, {-1, 0}, {-1, -1}, {0, -1}}};

@@ -11,7 +11,6 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "extract_surface";
 /// A face corner counts as straight (a vertex of a neighbouring facet lying on the side) when
 /// |sin(angle)| is under this; only used to pick a triangulation that has no degenerate triangle.
 constexpr double kStraightCornerSine = 1e-9;

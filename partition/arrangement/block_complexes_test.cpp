@@ -53,7 +53,7 @@ std::vector<Plane3> RandomPlanes(int n, const Box3& box, std::uint64_t seed) {
 }
 
 TEST(BuildBlockComplexes, OneBlockIsTheMonolithicComplex) {
-  const Box3 box = Box3(Vec3(-1.1, -0.9, -1), Vec3(1, 1.2, 0.8));
+  const Box3 box = Box3{Vec3(-1.1, -0.9, -1), Vec3(1, 1.2, 0.8)};
   const BlockGrid grid = MakeGrid(box, 10.0);
   const std::vector<Plane3> planes = RandomPlanes(12, box, 1);
   const BlockComplexes cx = Build(grid, planes, std::vector(planes.size(), AllBlocks(grid)));
@@ -76,7 +76,7 @@ TEST(BuildBlockComplexes, OneBlockIsTheMonolithicComplex) {
 // Every plane reaches every block: the blocks cut the full arrangement, the overlay of each
 // face pairs identical subdivisions.
 TEST(BuildBlockComplexes, RandomPlanesEverywhereAreValidAndConforming) {
-  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 0.7);  // 3 x 3 x 3, the last ones clipped
   const std::vector<Plane3> planes = RandomPlanes(10, box, 2);
   const BlockComplexes cx = Build(grid, planes, std::vector(planes.size(), AllBlocks(grid)));
@@ -95,7 +95,7 @@ TEST(BuildBlockComplexes, RandomPlanesEverywhereAreValidAndConforming) {
 }
 
 TEST(GlobalCellOffsets, NumberTheCellsOfEveryBlockContiguouslyInBlockOrder) {
-  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 0.7);
   const std::vector<Plane3> planes = RandomPlanes(6, box, 5);
   const BlockComplexes cx = Build(grid, planes, std::vector(planes.size(), AllBlocks(grid)));
@@ -111,7 +111,7 @@ TEST(GlobalCellOffsets, NumberTheCellsOfEveryBlockContiguouslyInBlockOrder) {
 // Random regions: neighbouring blocks are cut by different planes, so the overlay must intersect
 // different subdivisions of each face.
 TEST(BuildBlockComplexes, DifferentPlanesOnTheTwoSidesOfSeamsAreOverlaidExactly) {
-  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 0.5);  // 4 x 4 x 4
   for (std::uint64_t seed = 3; seed < 6; ++seed) {
     const std::vector<Plane3> planes = RandomPlanes(14, box, seed);
@@ -136,7 +136,7 @@ TEST(BuildBlockComplexes, DifferentPlanesOnTheTwoSidesOfSeamsAreOverlaidExactly)
 // Degenerate input: planes on block faces (kept, recorded on both sides), through block edges
 // and corners, duplicates, and many planes through one line crossing a seam.
 TEST(BuildBlockComplexes, PlanesOnFacesEdgesAndCornersOfBlocks) {
-  const Box3 box = Box3(Vec3(0, 0, 0), Vec3(4, 4, 4));
+  const Box3 box = Box3{Vec3(0, 0, 0), Vec3(4, 4, 4)};
   const BlockGrid grid = MakeGrid(box, 1.0);
   // Small integer normals, not normalised, so that the coincidences are exact.
   std::vector<Plane3> planes = {
@@ -163,7 +163,7 @@ TEST(BuildBlockComplexes, PlanesOnFacesEdgesAndCornersOfBlocks) {
 }
 
 TEST(BuildBlockComplexes, SameComplexesForAnyThreadCount) {
-  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 0.5);
   const std::vector<Plane3> planes = RandomPlanes(12, box, 9);
   Rng rng(9);
@@ -192,7 +192,7 @@ TEST(BuildBlockComplexes, SameComplexesForAnyThreadCount) {
 }
 
 TEST(ValidateBlockComplexes, CatchesABrokenOverlay) {
-  const Box3 box = Box3(Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 1.0);
   const std::vector<Plane3> planes = RandomPlanes(6, box, 4);
   BlockComplexes cx = Build(grid, planes, std::vector(planes.size(), AllBlocks(grid)));

@@ -14,7 +14,7 @@ namespace {
 // Two blocks [0,1] x [0,1]^2 and [1,2] x [0,1]^2 (the scene box [0,2] x [0,1]^2).
 BlockComplexes TwoBlocks(const std::vector<Plane3>& planes,
                          std::vector<std::vector<std::int64_t>> regions) {
-  const auto grid = BlockGrid::Create(Box3(Vec3(0, 0, 0), Vec3(2, 1, 1)), 1.0);
+  const auto grid = BlockGrid::Create(Box3{Vec3(0, 0, 0), Vec3(2, 1, 1)}, 1.0);
   EXPECT_TRUE(grid);
   auto cx = BuildBlockComplexes(*grid, planes, RegionsFromBlockLists(std::move(regions)), {}, {});
   EXPECT_TRUE(cx) << cx.error().ToString();
@@ -106,7 +106,7 @@ TEST(ComputeSeamRegularisation, PlaneOnBothSidesIsAParityCrossing) {
 // of two faces (four cells) and the centre is a corner of eight cells, all with alternating
 // signs.
 TEST(ComputeSeamRegularisation, BlockEdgesAndCornersOfAnEmptyGrid) {
-  const auto grid = BlockGrid::Create(Box3(Vec3(0, 0, 0), Vec3(2, 2, 2)), 1.0);
+  const auto grid = BlockGrid::Create(Box3{Vec3(0, 0, 0), Vec3(2, 2, 2)}, 1.0);
   ASSERT_TRUE(grid);
   auto cx = BuildBlockComplexes(*grid, {}, RegionsFromBlockLists({}), {}, {});
   ASSERT_TRUE(cx);

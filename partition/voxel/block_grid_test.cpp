@@ -16,7 +16,7 @@ BlockGrid MakeGrid(const Box3& box, double size) {
 // Sizes and offsets where min + i * s + s and min + (i + 1) * s round differently: the old grid
 // gave neighbouring blocks faces an ulp apart there.
 TEST(BlockGrid, NeighboursShareTheirFacesExactly) {
-  const BlockGrid grid = MakeGrid(Box3(Vec3(-0.1, -13.7, 1e3 / 3), Vec3(9.3, 2.2, 500)), 0.7);
+  const BlockGrid grid = MakeGrid(Box3{Vec3(-0.1, -13.7, 1e3 / 3), Vec3(9.3, 2.2, 500)}, 0.7);
   EXPECT_EQ(grid.dims(), Eigen::Vector3i(14, 23, 239));
   int checked = 0;
   for (int a = 0; a < 3; ++a) {
@@ -33,7 +33,7 @@ TEST(BlockGrid, NeighboursShareTheirFacesExactly) {
 }
 
 TEST(BlockGrid, TheBlocksCoverTheBoxExactlyAndTheLastIsClipped) {
-  const Box3 box = Box3(Vec3(0.1, 0.2, 0.3), Vec3(10.1, 1.2, 0.4));
+  const Box3 box = Box3{Vec3(0.1, 0.2, 0.3), Vec3(10.1, 1.2, 0.4)};
   const BlockGrid grid = MakeGrid(box, 3.0);
   EXPECT_EQ(grid.dims(), Eigen::Vector3i(4, 1, 1));
   EXPECT_EQ(grid.BlockBox({0, {0, 0, 0}}).min, box.min);
@@ -42,7 +42,7 @@ TEST(BlockGrid, TheBlocksCoverTheBoxExactlyAndTheLastIsClipped) {
 }
 
 TEST(BlockGrid, OneBlockIsTheBoxItself) {
-  const Box3 box = Box3(Vec3(-0.1, -0.7, 2.3), Vec3(0.3, 0.9, 2.9));
+  const Box3 box = Box3{Vec3(-0.1, -0.7, 2.3), Vec3(0.3, 0.9, 2.9)};
   const BlockGrid grid = MakeGrid(box, 100.0);
   EXPECT_EQ(grid.NumBaseBlocks(), 1);
   const Box3 only = grid.BlockBox({0, {0, 0, 0}});
@@ -65,7 +65,7 @@ TEST(BlockGrid, WholeBlocksAreCubesFromTheOrigin) {
 }
 
 TEST(BlockGrid, ChildrenTileTheirParentWithSharedFaces) {
-  const BlockGrid grid = MakeGrid(Box3(Vec3(-0.1, -0.3, 0.7), Vec3(2.9, 3.1, 3.3)), 0.9);
+  const BlockGrid grid = MakeGrid(Box3{Vec3(-0.1, -0.3, 0.7), Vec3(2.9, 3.1, 3.3)}, 0.9);
   ASSERT_EQ(grid.dims(), Eigen::Vector3i(4, 4, 3));
   const BlockKey parent{0, {1, 2, 2}};  // the last layer along z: clipped at the box
   const Box3 pb = grid.BlockBox(parent);
@@ -91,7 +91,7 @@ TEST(BlockGrid, ChildrenTileTheirParentWithSharedFaces) {
 }
 
 TEST(BlockGrid, LocateAgreesWithTheBlockBoxes) {
-  const BlockGrid grid = MakeGrid(Box3(Vec3(-1, -2, -3), Vec3(4, 5, 6)), 0.37);
+  const BlockGrid grid = MakeGrid(Box3{Vec3(-1, -2, -3), Vec3(4, 5, 6)}, 0.37);
   Rng rng(3);
   for (int i = 0; i < 2000; ++i) {
     Vec3 p(rng.Uniform(-1, 4), rng.Uniform(-2, 5), rng.Uniform(-3, 6));
@@ -115,16 +115,16 @@ TEST(BlockGrid, LocateAgreesWithTheBlockBoxes) {
 }
 
 TEST(BlockGrid, RejectsBadSizesAndBoxes) {
-  const Box3 unit = Box3(Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const Box3 unit = Box3{Vec3(0, 0, 0), Vec3(1, 1, 1)};
   for (const double size : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
     auto grid = BlockGrid::Create(unit, size);
     ASSERT_FALSE(grid);
     EXPECT_EQ(grid.error().code, ErrorCode::kInvalidOptions);
   }
-  auto flat = BlockGrid::Create(Box3(Vec3(0, 0, 0), Vec3(1, 1, 0)), 0.5);
+  auto flat = BlockGrid::Create(Box3{Vec3(0, 0, 0), Vec3(1, 1, 0)}, 0.5);
   ASSERT_FALSE(flat);
   EXPECT_EQ(flat.error().code, ErrorCode::kInvalidInput);
-  auto huge = BlockGrid::Create(Box3(Vec3(0, 0, 0), Vec3(1e6, 1e6, 1e6)), 1.0);
+  auto huge = BlockGrid::Create(Box3{Vec3(0, 0, 0), Vec3(1e6, 1e6, 1e6)}, 1.0);
   ASSERT_FALSE(huge);
   EXPECT_EQ(huge.error().code, ErrorCode::kResourceExhausted);
 }

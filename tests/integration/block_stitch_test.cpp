@@ -39,7 +39,7 @@ TEST_P(BlockStitch, GroundTruthLabelsGiveAClosedConformingManifold) {
   Box3 box;
   for (const Vec3& p : s->ground_truth.vertices) box.Extend(p);
   for (const Vec3& v : s->scene.viewpoints) box.Extend(v);
-  box = Box3(box.min - 0.05 * box.Extent(), box.max + 0.05 * box.Extent());
+  box = Box3{box.min - 0.05 * box.Extent(), box.max + 0.05 * box.Extent()};
   const double longest = box.Extent().maxCoeff();
   std::size_t seam_edges = 0;
   for (const int margin : {0, 1}) {

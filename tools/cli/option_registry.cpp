@@ -55,7 +55,10 @@ Status OptionRegistry::ApplyConfig() {
   const nlohmann::json config = nlohmann::json::parse(text.str(), nullptr, false);
   if (config.is_discarded()) return unreadable("not valid JSON");
   if (!config.is_object()) return unreadable("expected a JSON object {\"option\": value, ...}");
-  for (const auto& [key, value] : config.items()) {
+  for (const auto& item : config.items()) {
+    // Named, not a structured binding: clang 14 (sanitizer build) cannot capture one.
+    const std::string& key = item.key();
+    const nlohmann::json& value = item.value();
     const auto it = std::find_if(
         entries_.begin(), entries_.end(), [&](const Entry& e) { return e.key == key; });
     if (it == entries_.end()) return bad("'" + key + "' is not an option of this command");
