@@ -196,10 +196,10 @@ extern "C" {
 
 const char* linesurf_version(void) { return linesurf::LibraryVersion(); }
 
-const char* linesurf_status_name(linesurf_status status) {
+const char* linesurf_status_name(int status) {
   if (status == LINESURF_OK) return "ok";
   if (status < LINESURF_OK || status > LINESURF_ERROR_INTERNAL) return "unknown";
-  return linesurf::ErrorCodeName(static_cast<linesurf::ErrorCode>(static_cast<int>(status) - 1));
+  return linesurf::ErrorCodeName(static_cast<linesurf::ErrorCode>(status - 1));
 }
 
 linesurf_status linesurf_error_code(const linesurf_error* error) {

@@ -32,7 +32,9 @@ TEST(CApi, StatusNamesFollowTheErrorCodes) {
   EXPECT_STREQ(linesurf_status_name(LINESURF_OK), "ok");
   EXPECT_STREQ(linesurf_status_name(LINESURF_ERROR_CANCELLED), "cancelled");
   EXPECT_STREQ(linesurf_status_name(LINESURF_ERROR_INTERNAL), "internal");
-  EXPECT_STREQ(linesurf_status_name(static_cast<linesurf_status>(99)), "unknown");
+  EXPECT_STREQ(linesurf_status_name(99), "unknown");
+  EXPECT_STREQ(linesurf_status_name(-1), "unknown");
+  EXPECT_STREQ(linesurf_status_name(LINESURF_ERROR_INTERNAL + 1), "unknown");
   EXPECT_STREQ(linesurf_version(), LINESURF_VERSION_STRING);
 }
 

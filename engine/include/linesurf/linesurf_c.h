@@ -66,8 +66,9 @@ typedef struct linesurf_callbacks {
 
 /* The library version, e.g. "1.0.0". */
 LINESURF_API const char* linesurf_version(void);
-/* "ok", "invalid_options", "invalid_input", ... */
-LINESURF_API const char* linesurf_status_name(linesurf_status status);
+/* "ok", "invalid_options", "invalid_input", ...; "unknown" for an int that is no linesurf_status
+ * (an int, not the enum, because such a value held in the enum type is undefined in C++). */
+LINESURF_API const char* linesurf_status_name(int status);
 
 LINESURF_API linesurf_status linesurf_error_code(const linesurf_error* error);
 /* "stage: message", naming the offending file, line, index or field. Valid until freed. */
