@@ -2,7 +2,8 @@
 # out-of-tree hosts docs/examples/host_cpp and host_c against it with find_package(linesurf 1),
 # runs them on the bundled house and checks their meshes are byte for byte the CLI's.
 # Run by CTest (tests/integration/CMakeLists.txt) with -DBUILD_DIR= -DSOURCE_DIR= -DCLI= -DWORK=
-# -DCXX= -DCC= -DPKG_CONFIG= (may be empty).
+# -DCXX= -DCC= -DPKG_CONFIG= (may be empty) -DSANITIZE= (LINESURF_SANITIZE, may be empty: a
+# sanitized library needs hosts linked with the same sanitizer runtime).
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -13,6 +14,10 @@ function(run)
 endfunction()
 
 set(prefix ${WORK}/prefix)
+set(host_flags "")
+if(NOT SANITIZE STREQUAL "")
+  set(host_flags "-fsanitize=${SANITIZE}")
+endif()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
@@ -40,7 +45,8 @@ run(${CLI} --quiet reconstruct ${house} --scene exterior -o ${WORK}/cli.ply)
 foreach(host host_cpp host_c)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/docs/examples/${host} -B ${WORK}/${host}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix}
-    -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_C_COMPILER=${CC})
+    -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_C_COMPILER=${CC}
+    -DCMAKE_CXX_FLAGS=${host_flags} -DCMAKE_C_FLAGS=${host_flags})
   run(${CMAKE_COMMAND} --build ${WORK}/${host})
   run(${WORK}/${host}/${host} ${house} ${WORK}/${host}.ply)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/cli.ply ${WORK}/${host}.ply
@@ -57,6 +63,7 @@ if(PKG_CONFIG)
   execute_process(COMMAND ${PKG_CONFIG} --libs --cflags linesurf OUTPUT_VARIABLE flags
     OUTPUT_STRIP_TRAILING_WHITESPACE)
   separate_arguments(flags UNIX_COMMAND "${flags}")
-  run(${CC} ${SOURCE_DIR}/docs/examples/host_c/main.c ${flags} -o ${WORK}/host_c_pkgconfig)
+  run(${CC} ${host_flags} ${SOURCE_DIR}/docs/examples/host_c/main.c ${flags}
+    -o ${WORK}/host_c_pkgconfig)
   message(STATUS "host_c also builds with pkg-config: ${flags}")
 endif()
