@@ -2,7 +2,7 @@
 # Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
 # (clang 14; modules -O1, test and CLI executables -O0, line tables only; UBSan findings abort;
 # benchmarks and the Python module are not built) and runs it; no test found is an error
-# (docs/design/sanitizers_and_fuzzing.md). A CI step (.ci/run).
+# (docs/design/sanitizers_and_fuzzing.md). Not yet a step of .ci/run (that document says why).
 # Usage: tools/sanitize_and_test.sh [extra ctest arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."
