@@ -7,8 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
-cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang-14 \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DLINESURF_FUZZ=ON -DLINESURF_BUILD_BENCHMARKS=OFF
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
+  -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 -DLINESURF_FUZZ=ON \
+  -DLINESURF_BUILD_BENCHMARKS=OFF
 cmake --build build-fuzz -j "$(nproc)" --target linesurf_fuzzers
 mkdir -p build-fuzz/findings build-fuzz/logs
 targets=$(ls tests/robustness/fuzz/corpus)

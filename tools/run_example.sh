@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=build-example
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DLINESURF_BUILD_CLI=ON \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON -DLINESURF_BUILD_CLI=ON \
   -DLINESURF_BUILD_TESTS=OFF -DLINESURF_BUILD_BENCHMARKS=OFF
 cmake --build "$build" -j "$(nproc)" --target linesurf
 out=out/example

@@ -18,13 +18,6 @@ namespace linesurf {
 inline namespace v1 {
 namespace {
 
-/// Unwraps a result or rethrows its error unchanged (CatchAll turns it back into an Error).
-template <typename T>
-T ValueOrThrow(Expected<T>&& e) {
-  if (!e) throw LinesurfException(e.error());
-  return std::move(e.value());
-}
-
 /// ValueOrThrow for a check of what goes into `path`: the error names the file.
 template <typename T>
 T ValueOrThrowFor(Expected<T>&& e, const std::string& path) {

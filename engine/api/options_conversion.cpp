@@ -10,17 +10,18 @@
 namespace linesurf::api {
 namespace {
 
-constexpr const char* kStage = "options";
+constexpr const char* kOptionsConversionStage = "options";
 
 Status Bad(const std::string& field, const std::string& why) {
-  return Error{ErrorCode::kInvalidOptions, kStage, field + " " + why};
+  return Error{ErrorCode::kInvalidOptions, kOptionsConversionStage, field + " " + why};
 }
 
 /// The engine's own check of the detection fields, named as the facade's.
 Status ValidateDetection(const DetectionParameters& detection) {
   const Status s = ToEngineOptions(detection, 0).Validate();
   if (s) return s;
-  return Error{ErrorCode::kInvalidOptions, kStage, "detection: " + s.error().message};
+  return Error{
+      ErrorCode::kInvalidOptions, kOptionsConversionStage, "detection: " + s.error().message};
 }
 
 /// The engine's own check of the block margin (partition::PlaneSupportOptions), named as the
@@ -30,7 +31,8 @@ Status ValidateBlockMargin(int block_margin) {
   o.margin_blocks = block_margin;
   const Status s = o.Validate();
   if (s) return s;
-  return Error{ErrorCode::kInvalidOptions, kStage, "block_margin: " + s.error().message};
+  return Error{
+      ErrorCode::kInvalidOptions, kOptionsConversionStage, "block_margin: " + s.error().message};
 }
 
 pipeline::Engine ToEngine(ComplexEngine engine) {
@@ -48,7 +50,7 @@ Status ValidateBlocks(ComplexEngine engine, double block_size, int block_margin)
         block_size,
         {.block_size = "block_size", .detection_block_size = "detection.block_size"});
   }
-  if (!s) return Error{ErrorCode::kInvalidOptions, kStage, s.error().message};
+  if (!s) return Error{ErrorCode::kInvalidOptions, kOptionsConversionStage, s.error().message};
   return ValidateBlockMargin(block_margin);
 }
 
@@ -58,7 +60,7 @@ Status ValidateQuality(const QualityOptions& quality) {
   SetEngineQuality(quality, o);
   const Status s = o.Validate();
   if (s) return s;
-  return Error{ErrorCode::kInvalidOptions, kStage, "quality." + s.error().message};
+  return Error{ErrorCode::kInvalidOptions, kOptionsConversionStage, "quality." + s.error().message};
 }
 
 }  // namespace
@@ -177,7 +179,7 @@ Status ValidateWeights(const EnergyWeights& weights) {
                  message.substr(engine_name.size() + 1));
     }
   }
-  return Error{ErrorCode::kInvalidOptions, kStage, "weights: " + message};
+  return Error{ErrorCode::kInvalidOptions, kOptionsConversionStage, "weights: " + message};
 }
 
 namespace {

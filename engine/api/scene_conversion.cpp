@@ -9,19 +9,19 @@
 namespace linesurf::api {
 namespace {
 
-constexpr const char* kStage = "input_scene";
+constexpr const char* kSceneConversionStage = "input_scene";
 
 }  // namespace
 
 Expected<Scene> ToEngineScene(const InputScene& input,
                               std::span<const std::array<double, 4>> residuals) {
-  return CatchAll(kStage, [&]() -> Scene {
+  return CatchAll(kSceneConversionStage, [&]() -> Scene {
     const std::size_t num_segments = input.segments.size();
     const std::size_t num_viewpoints = input.viewpoints.size();
     const std::size_t num_planes = input.planes.size();
     LINESURF_THROW_IF(!residuals.empty() && residuals.size() != input.observations.size(),
                       kInvalidInput,
-                      kStage,
+                      kSceneConversionStage,
                       residuals.size()
                           << " residuals for " << input.observations.size() << " observations");
     Scene scene;
@@ -38,12 +38,12 @@ Expected<Scene> ToEngineScene(const InputScene& input,
       const Observation& o = input.observations[k];
       LINESURF_THROW_IF(o.segment >= num_segments,
                         kInvalidInput,
-                        kStage,
+                        kSceneConversionStage,
                         "observations[" << k << "].segment = " << o.segment << " is out of range ("
                                         << num_segments << " segments)");
       LINESURF_THROW_IF(o.viewpoint >= num_viewpoints,
                         kInvalidInput,
-                        kStage,
+                        kSceneConversionStage,
                         "observations[" << k << "].viewpoint = " << o.viewpoint
                                         << " is out of range (" << num_viewpoints
                                         << " viewpoints)");
@@ -75,26 +75,26 @@ Expected<Scene> ToEngineScene(const InputScene& input,
     }
     LINESURF_THROW_IF(num_planes == 0 && !input.memberships.empty(),
                       kInvalidInput,
-                      kStage,
+                      kSceneConversionStage,
                       input.memberships.size() << " memberships but no planes");
     if (num_planes > 0) scene.memberships.resize(num_segments);
     for (std::size_t k = 0; k < input.memberships.size(); ++k) {
       const Membership& m = input.memberships[k];
       LINESURF_THROW_IF(m.segment >= num_segments,
                         kInvalidInput,
-                        kStage,
+                        kSceneConversionStage,
                         "memberships[" << k << "].segment = " << m.segment << " is out of range ("
                                        << num_segments << " segments)");
       LINESURF_THROW_IF(m.plane >= num_planes,
                         kInvalidInput,
-                        kStage,
+                        kSceneConversionStage,
                         "memberships[" << k << "].plane = " << m.plane << " is out of range ("
                                        << num_planes << " planes)");
       PlaneMembership& entry = scene.memberships[SegmentId(static_cast<std::size_t>(m.segment))];
       const PlaneId plane(static_cast<std::size_t>(m.plane));
       LINESURF_THROW_IF(!entry.Contains(plane) && !entry.Add(plane),
                         kInvalidInput,
-                        kStage,
+                        kSceneConversionStage,
                         "memberships[" << k << "]: segment " << m.segment
                                        << " is already on two planes (at most two)");
     }

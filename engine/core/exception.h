@@ -25,6 +25,13 @@ class LinesurfException : public std::exception {
   throw LinesurfException(Error{code, std::move(stage), std::move(message)});
 }
 
+/// The value of a stage result, or its error rethrown unchanged (the inverse of CatchAll below).
+template <typename T>
+T ValueOrThrow(Expected<T>&& result) {
+  if (!result) throw LinesurfException(result.error());
+  return std::move(result.value());
+}
+
 /// Runs `fn` and converts any exception (ours, bad_alloc, CGAL's, TBB-rethrown) into an Error.
 template <typename Fn>
 auto CatchAll(const std::string& stage, Fn&& fn) noexcept -> Expected<decltype(fn())> {

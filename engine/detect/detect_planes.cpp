@@ -28,7 +28,7 @@
 namespace linesurf {
 
 namespace {
-constexpr char kStage[] = "detect_planes";
+constexpr char kDetectPlanesStage[] = "detect_planes";
 /// Candidates evaluated per parallel batch; fixed (not derived from the thread count) so that the
 /// adaptive stop sees the same batches for any number of threads.
 constexpr std::int64_t kBatchSize = 128;
@@ -55,7 +55,9 @@ constexpr std::uint64_t kBlockStream = 0xb10c0000b10c0000ULL;
 double DegToRad(double deg) { return deg * std::numbers::pi / 180.0; }
 
 Status Invalid(const std::string& field, const std::string& range) {
-  return Error{ErrorCode::kInvalidOptions, kStage, "PlaneDetectionOptions." + field + " must be " + range};
+  return Error{ErrorCode::kInvalidOptions,
+               kDetectPlanesStage,
+               "PlaneDetectionOptions." + field + " must be " + range};
 }
 }  // namespace
 
@@ -193,9 +195,10 @@ class Detector {
   /// Extracts planes one by one until a stopping criterion holds.
   void ExtractAll(PlaneDetectionStats& stats) {
     while (static_cast<std::int32_t>(planes_.size()) < options_.max_planes) {
-      ctx_.ThrowIfCancelled(kStage);
+      ctx_.ThrowIfCancelled(kDetectPlanesStage);
       if (report_progress_) {
-        ctx_.ReportProgress(kStage, static_cast<double>(planes_.size()) / options_.max_planes);
+        ctx_.ReportProgress(kDetectPlanesStage,
+                            static_cast<double>(planes_.size()) / options_.max_planes);
       }
       const std::vector<SegmentId> pool = SamplingPool();
       if (pool.size() < 2) break;
@@ -465,7 +468,7 @@ class Detector {
         const double needed = log_miss / std::log1p(-w);
         if (static_cast<double>(done) >= needed) break;
       }
-      ctx_.ThrowIfCancelled(kStage);
+      ctx_.ThrowIfCancelled(kDetectPlanesStage);
     }
     return best;
   }
@@ -529,7 +532,7 @@ partition::BlockGrid DetectionGrid(std::span<const Segment3> lines, double block
       partition::BlockGrid::CreateWholeBlocks(box.min, block_size, blocks);
   LINESURF_THROW_IF(!grid,
                     kInvalidOptions,
-                    kStage,
+                    kDetectPlanesStage,
                     "PlaneDetectionOptions.block_size "
                         << block_size << " does not fit a scene of extent "
                         << box.Extent().maxCoeff() << ": " << grid.error().message);
@@ -593,7 +596,8 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
     for (SupportedPlane& plane : found[b]) {
       for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
     }
-    ctx.ReportProgress(kStage, static_cast<double>(++done) / static_cast<double>(blocks.size()));
+    ctx.ReportProgress(kDetectPlanesStage,
+                       static_cast<double>(++done) / static_cast<double>(blocks.size()));
   });
   std::vector<SupportedPlane> planes;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
@@ -620,11 +624,13 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                                             const PlaneDetectionOptions& options,
                                             const RunContext& ctx) noexcept {
   if (Status valid = options.Validate(); !valid) return valid.error();
-  return CatchAll(kStage, [&]() -> PlaneDetectionResult {
+  return CatchAll(kDetectPlanesStage, [&]() -> PlaneDetectionResult {
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < scene.segments.size(); ++i) {
       const Segment3& s = scene.segments.raw()[i];
-      LINESURF_THROW_IF(!s.p1.allFinite() || !s.p2.allFinite(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(!s.p1.allFinite() || !s.p2.allFinite(),
+                        kInvalidInput,
+                        kDetectPlanesStage,
                         "segment " << i << " has a non-finite endpoint");
     }
     PlaneDetectionResult result;

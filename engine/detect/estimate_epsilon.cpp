@@ -13,7 +13,7 @@
 namespace linesurf {
 namespace {
 
-constexpr const char* kStage = "estimate_epsilon";
+constexpr const char* kEstimateEpsilonStage = "estimate_epsilon";
 /// eps_0 of the first probe, as a fraction of the median segment length: 2 cm on the ~1 m
 /// segments of metric scenes (the paper's default), 0.019 on Andalusian.
 constexpr double kInitialOverMedianLength = 0.02;
@@ -117,10 +117,10 @@ EpsilonEstimate Probe(const Scene& scene,
   probe_ctx.num_threads = ctx.num_threads;
   probe_ctx.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
   probe_ctx.on_progress = [&ctx, &round](const Progress& p) {
-    ctx.ReportProgress(kStage, (round - 1 + p.stage_fraction) / kMaxRounds);
+    ctx.ReportProgress(kEstimateEpsilonStage, (round - 1 + p.stage_fraction) / kMaxRounds);
   };
   probe_ctx.log = ctx.log;
-  ctx.ReportProgress(kStage, 0.0);
+  ctx.ReportProgress(kEstimateEpsilonStage, 0.0);
   for (; round <= kMaxRounds; ++round) {
     probe.epsilon = eps;
     Expected<PlaneDetectionResult> found = DetectPlanes(scene, probe, probe_ctx);
@@ -136,7 +136,7 @@ EpsilonEstimate Probe(const Scene& scene,
     eps = next;
     if (converged) break;
   }
-  ctx.ReportProgress(kStage, 1.0);
+  ctx.ReportProgress(kEstimateEpsilonStage, 1.0);
   out.epsilon = eps;
   out.initial_epsilon = eps0;
   out.source = "probe";
@@ -155,14 +155,14 @@ Expected<EpsilonEstimate> ResolveEpsilon(const Scene& scene,
                                          const PlaneDetectionOptions& options,
                                          const RunContext& ctx) noexcept {
   if (Status valid = options.Validate(); !valid) return valid.error();
-  return CatchAll(kStage, [&]() -> EpsilonEstimate {
+  return CatchAll(kEstimateEpsilonStage, [&]() -> EpsilonEstimate {
     EpsilonEstimate e;
     if (options.relative_epsilon) {
       e.epsilon = *options.relative_epsilon * SceneDiagonal(scene);
       e.source = "relative";
       LINESURF_THROW_IF(!(e.epsilon > 0.0),
                         kDegenerate,
-                        kStage,
+                        kEstimateEpsilonStage,
                         "relative_epsilon needs a scene of non-zero extent");
       return e;
     }

@@ -18,7 +18,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "write_cityjson";
+constexpr const char* kCityjsonWriteStage = "write_cityjson";
 /// A face is a wall when its normal is within this angle of horizontal.
 constexpr double kWallMaxTiltDeg = 10.0;
 /// A face lies on a plane when the normals agree within this angle and every vertex is within
@@ -111,17 +111,17 @@ std::string CityJsonText(const PolygonMesh& mesh,
     const auto face = mesh.Face(f);
     LINESURF_THROW_IF(face.size() < 3,
                       kInvalidInput,
-                      kStage,
+                      kCityjsonWriteStage,
                       file << ": face " << f << " has " << face.size() << " vertices");
     for (const std::uint32_t v : face) {
       LINESURF_THROW_IF(v >= mesh.vertices.size(),
                         kInvalidInput,
-                        kStage,
+                        kCityjsonWriteStage,
                         file << ": face " << f << ": vertex " << v << " out of range ("
                              << mesh.vertices.size() << " vertices)");
       LINESURF_THROW_IF(!mesh.vertices[v].allFinite(),
                         kInvalidInput,
-                        kStage,
+                        kCityjsonWriteStage,
                         file << ": vertex " << v << " is not finite");
       sets.Union(face[0], v);
       used[v] = true;
@@ -259,8 +259,8 @@ bool IsCityJsonPath(const std::filesystem::path& path) {
 Status WriteCityJson(const PolygonMesh& mesh,
                      std::span<const Plane3> planes,
                      const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&] {
-    WriteFileAtomically(path, CityJsonText(mesh, planes, path.string()), kStage);
+  return CatchAll(kCityjsonWriteStage, [&] {
+    WriteFileAtomically(path, CityJsonText(mesh, planes, path.string()), kCityjsonWriteStage);
   });
 }
 

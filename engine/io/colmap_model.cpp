@@ -15,7 +15,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "read_cameras";
+constexpr const char* kColmapModelStage = "read_cameras";
 
 /// One registered image: its ids, centre, and where it was read (for error messages).
 struct ColmapImage {
@@ -29,7 +29,7 @@ struct ColmapImage {
 Vec3 CentreOf(const double q[4], const double t[3], const std::string& where) {
   const Eigen::Quaterniond quaternion(q[0], q[1], q[2], q[3]);
   LINESURF_THROW_IF(
-      !(quaternion.norm() > 0.0), kInvalidInput, kStage, where << ": zero quaternion");
+      !(quaternion.norm() > 0.0), kInvalidInput, kColmapModelStage, where << ": zero quaternion");
   const Eigen::Matrix3d r = quaternion.normalized().toRotationMatrix();
   return -(r.transpose() * Vec3(t[0], t[1], t[2]));
 }
@@ -38,7 +38,9 @@ Vec3 CentreOf(const double q[4], const double t[3], const std::string& where) {
 std::uint64_t ReadRecordCount(LittleEndianCursor& cursor, const std::string& file,
                               const char* record) {
   std::uint64_t count = 0;
-  LINESURF_THROW_IF(!cursor.Read(count), kInvalidInput, kStage,
+  LINESURF_THROW_IF(!cursor.Read(count),
+                    kInvalidInput,
+                    kColmapModelStage,
                     file << ": shorter than its 8-byte " << record << " count");
   return count;
 }
@@ -47,7 +49,7 @@ std::uint64_t ReadRecordCount(LittleEndianCursor& cursor, const std::string& fil
 /// are taken in pairs, not by content).
 std::vector<ColmapImage> ReadImagesText(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const std::string text = ReadWholeFile(path, kStage);
+  const std::string text = ReadWholeFile(path, kColmapModelStage);
   LineReader reader(text);
   std::vector<std::string_view> tokens;
   std::vector<ColmapImage> images;
@@ -64,7 +66,7 @@ std::vector<ColmapImage> ReadImagesText(const std::filesystem::path& path) {
     LINESURF_THROW_IF(tokens.size() < 10 || !ParseInt(tokens[0], image_id) ||
                           !ParseFiniteNumbers(tokens, 1, 7, v) || !ParseInt(tokens[8], camera_id),
                       kInvalidInput,
-                      kStage,
+                      kColmapModelStage,
                       image.where << ": expected 'IMAGE_ID QW QX QY QZ TX TY TZ CAMERA_ID NAME'");
     image.image_id = image_id;
     image.camera_id = camera_id;
@@ -80,7 +82,7 @@ std::vector<ColmapImage> ReadImagesText(const std::filesystem::path& path) {
 /// 24-byte points (double x, double y, int64 POINT3D_ID), skipped.
 std::vector<ColmapImage> ReadImagesBinary(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const std::string data = ReadWholeFile(path, kStage);
+  const std::string data = ReadWholeFile(path, kColmapModelStage);
   LittleEndianCursor cursor(data);
   const std::uint64_t count = ReadRecordCount(cursor, file, "image");
   std::vector<ColmapImage> images;
@@ -101,19 +103,23 @@ std::vector<ColmapImage> ReadImagesBinary(const std::filesystem::path& path) {
     LINESURF_THROW_IF(
         !ok,
         kInvalidInput,
-        kStage,
+        kColmapModelStage,
         image.where << ": file ends inside the image record (" << count << " images announced)");
     LINESURF_THROW_IF(points > data.size() / 24 || !cursor.Skip(24 * points),
                       kInvalidInput,
-                      kStage,
+                      kColmapModelStage,
                       image.where << ": file ends inside its " << points << " 2D points");
     for (const double v : q) {
-      LINESURF_THROW_IF(
-          !std::isfinite(v), kInvalidInput, kStage, image.where << ": non-finite quaternion");
+      LINESURF_THROW_IF(!std::isfinite(v),
+                        kInvalidInput,
+                        kColmapModelStage,
+                        image.where << ": non-finite quaternion");
     }
     for (const double v : t) {
-      LINESURF_THROW_IF(
-          !std::isfinite(v), kInvalidInput, kStage, image.where << ": non-finite translation");
+      LINESURF_THROW_IF(!std::isfinite(v),
+                        kInvalidInput,
+                        kColmapModelStage,
+                        image.where << ": non-finite translation");
     }
     image.image_id = image_id;
     image.camera_id = camera_id;
@@ -122,7 +128,7 @@ std::vector<ColmapImage> ReadImagesBinary(const std::filesystem::path& path) {
   }
   LINESURF_THROW_IF(!cursor.AtEnd(),
                     kInvalidInput,
-                    kStage,
+                    kColmapModelStage,
                     file << ": " << data.size() - cursor.offset() << " bytes after the " << count
                          << " announced images");
   return images;
@@ -131,7 +137,7 @@ std::vector<ColmapImage> ReadImagesBinary(const std::filesystem::path& path) {
 /// cameras.txt: `CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]` per non-comment line; ids only.
 std::set<std::int64_t> ReadCameraIdsText(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const std::string text = ReadWholeFile(path, kStage);
+  const std::string text = ReadWholeFile(path, kColmapModelStage);
   LineReader reader(text);
   std::vector<std::string_view> tokens;
   std::set<std::int64_t> ids;
@@ -140,7 +146,7 @@ std::set<std::int64_t> ReadCameraIdsText(const std::filesystem::path& path) {
     long long id = 0;
     LINESURF_THROW_IF(tokens.size() < 4 || !ParseInt(tokens[0], id),
                       kInvalidInput,
-                      kStage,
+                      kColmapModelStage,
                       file << ": line " << reader.line_number()
                            << ": expected 'CAMERA_ID MODEL WIDTH HEIGHT PARAMS[]'");
     ids.insert(id);
@@ -156,7 +162,7 @@ constexpr std::uint64_t kModelParams[] = {3, 4, 4, 5, 8, 8, 12, 5, 4, 5, 12, 16}
 /// uint64 WIDTH, uint64 HEIGHT and the model's parameters as doubles; ids only.
 std::set<std::int64_t> ReadCameraIdsBinary(const std::filesystem::path& path) {
   const std::string file = path.string();
-  const std::string data = ReadWholeFile(path, kStage);
+  const std::string data = ReadWholeFile(path, kColmapModelStage);
   LittleEndianCursor cursor(data);
   const std::uint64_t count = ReadRecordCount(cursor, file, "camera");
   std::set<std::int64_t> ids;
@@ -171,17 +177,17 @@ std::set<std::int64_t> ReadCameraIdsBinary(const std::filesystem::path& path) {
     LINESURF_THROW_IF(
         !ok,
         kInvalidInput,
-        kStage,
+        kColmapModelStage,
         file << ": camera " << i << " (byte " << at << "): file ends inside the camera record");
     LINESURF_THROW_IF(
         model < 0 || model >= static_cast<std::int32_t>(std::size(kModelParams)),
         kInvalidInput,
-        kStage,
+        kColmapModelStage,
         file << ": camera " << i << " (byte " << at << "): unknown MODEL_ID " << model);
     LINESURF_THROW_IF(
         !cursor.Skip(8 * kModelParams[model]),
         kInvalidInput,
-        kStage,
+        kColmapModelStage,
         file << ": camera " << i << " (byte " << at << "): file ends inside its parameters");
     ids.insert(id);
   }
@@ -207,7 +213,7 @@ CameraCentres ReadColmapCameraCentres(const std::filesystem::path& path) {
       LINESURF_THROW_IF(
           !ids.count(image.camera_id),
           kInvalidInput,
-          kStage,
+          kColmapModelStage,
           image.where << ": CAMERA_ID " << image.camera_id << " is not in " << cameras.string());
     }
   }
@@ -215,7 +221,7 @@ CameraCentres ReadColmapCameraCentres(const std::filesystem::path& path) {
   for (const ColmapImage& image : list) {
     LINESURF_THROW_IF(!centres.emplace(image.image_id, image.centre).second,
                       kInvalidInput,
-                      kStage,
+                      kColmapModelStage,
                       image.where << ": IMAGE_ID " << image.image_id << " repeated");
   }
   return centres;

@@ -12,7 +12,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "read_limap";
+constexpr const char* kLimapReaderStage = "read_limap";
 
 }  // namespace
 
@@ -29,7 +29,7 @@ bool LooksLikeLimapTracks(std::string_view text) {
 
 Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& centres) {
   const std::string file = path.string();
-  const std::string text = ReadWholeFile(path, kStage);
+  const std::string text = ReadWholeFile(path, kLimapReaderStage);
   LineReader reader(text);
   std::vector<std::string_view> tokens;
   // The next line, which must exist: `what` names it in the error.
@@ -37,7 +37,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
     LINESURF_THROW_IF(
         !reader.Next(tokens),
         kInvalidInput,
-        kStage,
+        kLimapReaderStage,
         file << ": line " << reader.line_number() + 1 << ": file ends before " << what);
   };
   auto where = [&] { return file + ": line " + std::to_string(reader.line_number()); };
@@ -47,7 +47,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
   long long count = 0;
   LINESURF_THROW_IF(tokens.size() != 1 || !ParseInt(tokens[0], count) || count < 0,
                     kInvalidInput,
-                    kStage,
+                    kLimapReaderStage,
                     where() << ": expected the number of tracks");
 
   Scene scene;
@@ -64,7 +64,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
                           !ParseInt(tokens[1], n_lines) || !ParseInt(tokens[2], n_images) ||
                           n_lines < 0 || n_images < 0,
                       kInvalidInput,
-                      kStage,
+                      kLimapReaderStage,
                       where() << ": track " << t << ": expected 'track_id n_lines n_images'");
     Segment3 seg;
     for (Vec3* p : {&seg.p1, &seg.p2}) {
@@ -72,7 +72,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
       double v[3];
       LINESURF_THROW_IF(tokens.size() != 3 || !ParseFiniteNumbers(tokens, 0, 3, v),
                         kInvalidInput,
-                        kStage,
+                        kLimapReaderStage,
                         where() << ": track " << t << ": expected 3 finite coordinates");
       *p = Vec3(v[0], v[1], v[2]);
     }
@@ -80,7 +80,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
     const std::size_t n = static_cast<std::size_t>(n_lines);
     LINESURF_THROW_IF(tokens.size() != n,
                       kInvalidInput,
-                      kStage,
+                      kLimapReaderStage,
                       where() << ": track " << t << ": " << n_lines << " image ids expected, "
                               << tokens.size() << " found");
     row.clear();
@@ -90,12 +90,12 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
       LINESURF_THROW_IF(
           !ParseInt(tokens[k], image),
           kInvalidInput,
-          kStage,
+          kLimapReaderStage,
           where() << ": track " << t << ": image id '" << tokens[k] << "' is not an integer");
       const auto it = centres.find(image);
       LINESURF_THROW_IF(it == centres.end(),
                         kInvalidInput,
-                        kStage,
+                        kLimapReaderStage,
                         where() << ": track " << t << ": image id " << image
                                 << " is not in the camera model (" << centres.size()
                                 << " cameras)");
@@ -104,13 +104,13 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
     }
     LINESURF_THROW_IF(distinct.size() != static_cast<std::size_t>(n_images),
                       kInvalidInput,
-                      kStage,
+                      kLimapReaderStage,
                       where() << ": track " << t << ": " << distinct.size()
                               << " distinct image ids, the track header announces " << n_images);
     next_line("the track's line ids");
     LINESURF_THROW_IF(tokens.size() != n,
                       kInvalidInput,
-                      kStage,
+                      kLimapReaderStage,
                       where() << ": track " << t << ": " << n_lines << " line ids expected, "
                               << tokens.size() << " found");
     scene.segments.push_back(seg);
@@ -119,7 +119,7 @@ Scene ReadLimapTracks(const std::filesystem::path& path, const CameraCentres& ce
   while (reader.Next(tokens)) {
     LINESURF_THROW_IF(!tokens.empty(),
                       kInvalidInput,
-                      kStage,
+                      kLimapReaderStage,
                       where() << ": text after the " << count << " announced tracks");
   }
   return scene;

@@ -17,13 +17,13 @@ constexpr const char* kTracks =
     "7 9 7 \n4 8 15 \n"
     "1 1 1\n-1.0 2.0 3.0\n-1.0 2.0 4.0\n9 \n16 \n";
 
-const CameraCentres kCentres = {{7, Vec3(10, 0, 0)}, {9, Vec3(0, 10, 0)}};
+const CameraCentres kTrackCameraCentres = {{7, Vec3(10, 0, 0)}, {9, Vec3(0, 10, 0)}};
 
-std::string ErrorOf(const std::string& text) {
+std::string ReadTracksError(const std::string& text) {
   const auto dir = testing::FreshTempDir();
   testing::WriteFixture(dir / "alltracks.txt", text);
   try {
-    ReadLimapTracks(dir / "alltracks.txt", kCentres);
+    ReadLimapTracks(dir / "alltracks.txt", kTrackCameraCentres);
   } catch (const LinesurfException& e) {
     EXPECT_NE(e.error().message.find("alltracks.txt: line "), std::string::npos);
     return e.error().message;
@@ -34,7 +34,7 @@ std::string ErrorOf(const std::string& text) {
 TEST(LimapReader, TracksBecomeSegmentsSeenFromTheirImages) {
   const auto dir = testing::FreshTempDir();
   testing::WriteFixture(dir / "alltracks.txt", kTracks);
-  const Scene scene = ReadLimapTracks(dir / "alltracks.txt", kCentres);
+  const Scene scene = ReadLimapTracks(dir / "alltracks.txt", kTrackCameraCentres);
   ASSERT_EQ(scene.NumSegments(), 2u);
   EXPECT_EQ(scene.segments[SegmentId(0u)].p2, Vec3(1.5, 0, 0.25));
   EXPECT_EQ(scene.segments[SegmentId(1u)].p1, Vec3(-1, 2, 3));
@@ -47,19 +47,22 @@ TEST(LimapReader, TracksBecomeSegmentsSeenFromTheirImages) {
 }
 
 TEST(LimapReader, ErrorsNameTheLine) {
-  EXPECT_NE(ErrorOf("1\n0 1 1\n0 0 0\n1 1 1\n8 \n0 \n")
+  EXPECT_NE(ReadTracksError("1\n0 1 1\n0 0 0\n1 1 1\n8 \n0 \n")
                 .find("line 5: track 0: image id 8 is not in the camera model (2 cameras)"),
             std::string::npos);
-  EXPECT_NE(ErrorOf("1\n0 2 2\n0 0 0\n1 1 1\n7 7 \n0 1 \n")
+  EXPECT_NE(ReadTracksError("1\n0 2 2\n0 0 0\n1 1 1\n7 7 \n0 1 \n")
                 .find("line 5: track 0: 1 distinct image ids, the track header announces 2"),
             std::string::npos);
-  EXPECT_NE(ErrorOf("1\n0 1 1\n0 0 0\n1 nan 1\n7 \n0 \n").find("line 4: track 0: expected 3"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("2\n0 1 1\n0 0 0\n1 1 1\n7 \n0 \n").find("line 7: file ends before the next"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("1\n0 2 1\n0 0 0\n1 1 1\n7 \n0 \n").find("line 5: track 0: 2 image ids"),
-            std::string::npos);
-  EXPECT_NE(ErrorOf("1\n0 1 1\n0 0 0\n1 1 1\n7 \n0 \n5\n").find("line 7: text after the 1"),
+  EXPECT_NE(
+      ReadTracksError("1\n0 1 1\n0 0 0\n1 nan 1\n7 \n0 \n").find("line 4: track 0: expected 3"),
+      std::string::npos);
+  EXPECT_NE(
+      ReadTracksError("2\n0 1 1\n0 0 0\n1 1 1\n7 \n0 \n").find("line 7: file ends before the next"),
+      std::string::npos);
+  EXPECT_NE(
+      ReadTracksError("1\n0 2 1\n0 0 0\n1 1 1\n7 \n0 \n").find("line 5: track 0: 2 image ids"),
+      std::string::npos);
+  EXPECT_NE(ReadTracksError("1\n0 1 1\n0 0 0\n1 1 1\n7 \n0 \n5\n").find("line 7: text after the 1"),
             std::string::npos);
 }
 

@@ -15,10 +15,10 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "read_mesh";
+constexpr const char* kMeshReadStage = "read_mesh";
 
 #define LINESURF_MESH_FAIL_IF(cond, where, msg) \
-  LINESURF_THROW_IF(cond, kInvalidInput, kStage, file << ": " << where << ": " << msg)
+  LINESURF_THROW_IF(cond, kInvalidInput, kMeshReadStage, file << ": " << where << ": " << msg)
 
 Vec3 ParseVertex(const std::vector<std::string_view>& tokens, std::size_t first,
                  const std::string& file, const std::string& where) {
@@ -36,11 +36,13 @@ Vec3 ParseVertex(const std::vector<std::string_view>& tokens, std::size_t first,
 /// normals, areas and the exact predicates overflow), every face index in range.
 void CheckMesh(const PolygonMesh& mesh, const std::string& file) {
   if (const auto violation = CoordinateBoundViolation(mesh)) {
-    ThrowError(ErrorCode::kInvalidInput, kStage, file + ": " + *violation);
+    ThrowError(ErrorCode::kInvalidInput, kMeshReadStage, file + ": " + *violation);
   }
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     for (const std::uint32_t i : mesh.Face(f)) {
-      LINESURF_THROW_IF(i >= mesh.vertices.size(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(i >= mesh.vertices.size(),
+                        kInvalidInput,
+                        kMeshReadStage,
                         file << ": face " << f << ": vertex index " << i << " out of range ("
                              << mesh.vertices.size() << " vertices)");
     }
@@ -92,10 +94,13 @@ PolygonMesh ReadOff(std::string_view text, const std::string& file) {
     }
     return false;
   };
-  LINESURF_THROW_IF(!next() || tokens[0].substr(0, 3) != "OFF", kInvalidInput, kStage,
+  LINESURF_THROW_IF(!next() || tokens[0].substr(0, 3) != "OFF",
+                    kInvalidInput,
+                    kMeshReadStage,
                     file << ": line 1: expected the OFF header");
   if (tokens.size() == 1) {  // counts on their own line (else on the header line)
-    LINESURF_THROW_IF(!next(), kInvalidInput, kStage, file << ": missing vertex/face counts");
+    LINESURF_THROW_IF(
+        !next(), kInvalidInput, kMeshReadStage, file << ": missing vertex/face counts");
   } else {
     tokens.erase(tokens.begin());
   }
@@ -107,7 +112,9 @@ PolygonMesh ReadOff(std::string_view text, const std::string& file) {
   PolygonMesh mesh;
   mesh.vertices.reserve(static_cast<std::size_t>(std::min(num_vertices, 1LL << 26)));
   for (long long v = 0; v < num_vertices; ++v) {
-    LINESURF_THROW_IF(!next(), kInvalidInput, kStage,
+    LINESURF_THROW_IF(!next(),
+                      kInvalidInput,
+                      kMeshReadStage,
                       file << ": vertex " << v << ": unexpected end of file (" << num_vertices
                            << " vertices announced)");
     mesh.vertices.push_back(
@@ -115,9 +122,11 @@ PolygonMesh ReadOff(std::string_view text, const std::string& file) {
   }
   std::vector<std::uint32_t> face;
   for (long long f = 0; f < num_faces; ++f) {
-    LINESURF_THROW_IF(!next(), kInvalidInput, kStage,
-                      file << ": face " << f << ": unexpected end of file (" << num_faces
-                           << " faces announced)");
+    LINESURF_THROW_IF(
+        !next(),
+        kInvalidInput,
+        kMeshReadStage,
+        file << ": face " << f << ": unexpected end of file (" << num_faces << " faces announced)");
     where = "line " + std::to_string(reader.line_number());
     long long n = 0;
     LINESURF_MESH_FAIL_IF(!ParseInt(tokens[0], n) || n < 3 ||
@@ -238,21 +247,29 @@ class PlyValues {
   /// Starts the next element item; `where` names it for errors.
   void BeginItem(const std::string& file, const std::string& where) {
     if (!ascii_) return;
-    LINESURF_THROW_IF(!lines_.Next(tokens_), kInvalidInput, kStage,
+    LINESURF_THROW_IF(!lines_.Next(tokens_),
+                      kInvalidInput,
+                      kMeshReadStage,
                       file << ": " << where << ": unexpected end of file");
     next_ = 0;
     where_ = where + " (line " + std::to_string(first_line_ + lines_.line_number()) + ")";
   }
   void Read(PlyType type, double& value, const std::string& file, const std::string& where) {
     if (ascii_) {
-      LINESURF_THROW_IF(next_ >= tokens_.size(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(next_ >= tokens_.size(),
+                        kInvalidInput,
+                        kMeshReadStage,
                         file << ": " << where_ << ": too few values on the line");
       const std::string_view t = tokens_[next_++];
-      LINESURF_THROW_IF(!ParseDouble(t, value), kInvalidInput, kStage,
+      LINESURF_THROW_IF(!ParseDouble(t, value),
+                        kInvalidInput,
+                        kMeshReadStage,
                         file << ": " << where_ << ": '" << t << "' is not a number");
       return;
     }
-    LINESURF_THROW_IF(!binary_.Read(type, value), kInvalidInput, kStage,
+    LINESURF_THROW_IF(!binary_.Read(type, value),
+                      kInvalidInput,
+                      kMeshReadStage,
                       file << ": " << where << ": truncated binary data");
   }
 
@@ -270,7 +287,9 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
   LineReader header(text);
   std::vector<std::string_view> tokens;
   LINESURF_THROW_IF(!header.Next(tokens) || tokens.size() != 1 || tokens[0] != "ply",
-                    kInvalidInput, kStage, file << ": line 1: expected 'ply'");
+                    kInvalidInput,
+                    kMeshReadStage,
+                    file << ": line 1: expected 'ply'");
   bool ascii = false, big_endian = false, have_format = false, have_end = false;
   std::vector<PlyElement> elements;
   while (header.Next(tokens)) {
@@ -310,7 +329,9 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
       LINESURF_MESH_FAIL_IF(true, where, "unknown header keyword '" << tokens[0] << "'");
     }
   }
-  LINESURF_THROW_IF(!have_format || !have_end, kInvalidInput, kStage,
+  LINESURF_THROW_IF(!have_format || !have_end,
+                    kInvalidInput,
+                    kMeshReadStage,
                     file << ": incomplete PLY header (no format or end_header)");
   PolygonMesh mesh;
   PlyValues values(text.substr(header.position() > text.size() ? text.size() : header.position()),
@@ -330,9 +351,13 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
     }
     const bool is_vertex = element.name == "vertex";
     const bool is_face = element.name == "face";
-    LINESURF_THROW_IF(is_vertex && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0), kInvalidInput,
-                      kStage, file << ": element vertex lacks an x, y or z property");
-    LINESURF_THROW_IF(is_face && list_index < 0, kInvalidInput, kStage,
+    LINESURF_THROW_IF(is_vertex && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0),
+                      kInvalidInput,
+                      kMeshReadStage,
+                      file << ": element vertex lacks an x, y or z property");
+    LINESURF_THROW_IF(is_face && list_index < 0,
+                      kInvalidInput,
+                      kMeshReadStage,
                       file << ": element face lacks a vertex_indices list");
     for (std::size_t i = 0; i < element.count; ++i) {
       const std::string where = element.name + " " + std::to_string(i);
@@ -379,13 +404,15 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
 }  // namespace
 
 Expected<PolygonMesh> ReadMesh(const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&]() -> PolygonMesh {
+  return CatchAll(kMeshReadStage, [&]() -> PolygonMesh {
     const std::string file = path.string();
     const MeshFormat format = MeshFormatOf(path);
-    LINESURF_THROW_IF(format == MeshFormat::kUnknown, kInvalidInput, kStage,
+    LINESURF_THROW_IF(format == MeshFormat::kUnknown,
+                      kInvalidInput,
+                      kMeshReadStage,
                       file << ": unknown mesh extension '" << path.extension().string()
                            << "' (expected .ply, .obj or .off)");
-    const std::string content = ReadWholeFile(path, kStage);
+    const std::string content = ReadWholeFile(path, kMeshReadStage);
     PolygonMesh mesh = format == MeshFormat::kPly   ? ReadPly(content, file)
                        : format == MeshFormat::kObj ? ReadObj(content, file)
                                                     : ReadOff(content, file);

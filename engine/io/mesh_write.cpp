@@ -13,7 +13,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "write_mesh";
+constexpr const char* kMeshWriteStage = "write_mesh";
 
 /// The faces to write: the mesh's own, or their triangle fans.
 struct FaceList {
@@ -31,23 +31,32 @@ struct FaceList {
 
 FaceList CheckedFaces(const PolygonMesh& mesh, const MeshWriteOptions& options,
                       const std::string& file) {
-  LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.back() != mesh.face_indices.size(),
-                    kInvalidInput, kStage, file << ": mesh face offsets do not match its indices");
+  LINESURF_THROW_IF(
+      mesh.face_offsets.empty() || mesh.face_offsets.back() != mesh.face_indices.size(),
+      kInvalidInput,
+      kMeshWriteStage,
+      file << ": mesh face offsets do not match its indices");
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    LINESURF_THROW_IF(!mesh.vertices[v].allFinite(), kInvalidInput, kStage,
+    LINESURF_THROW_IF(!mesh.vertices[v].allFinite(),
+                      kInvalidInput,
+                      kMeshWriteStage,
                       file << ": vertex " << v << " has a non-finite coordinate");
   }
   FaceList faces;
   faces.indices.reserve(mesh.face_indices.size() * (options.triangulate ? 3 : 1));
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
-    LINESURF_THROW_IF(face.size() < 3, kInvalidInput, kStage,
-                      file << ": face " << f << " has " << face.size()
-                           << " vertices (at least 3 needed)");
+    LINESURF_THROW_IF(
+        face.size() < 3,
+        kInvalidInput,
+        kMeshWriteStage,
+        file << ": face " << f << " has " << face.size() << " vertices (at least 3 needed)");
     for (const std::uint32_t i : face) {
-      LINESURF_THROW_IF(i >= mesh.vertices.size(), kInvalidInput, kStage,
-                        file << ": face " << f << " uses vertex " << i << " of "
-                             << mesh.vertices.size());
+      LINESURF_THROW_IF(
+          i >= mesh.vertices.size(),
+          kInvalidInput,
+          kMeshWriteStage,
+          file << ": face " << f << " uses vertex " << i << " of " << mesh.vertices.size());
     }
     if (options.triangulate) {
       for (std::size_t k = 1; k + 1 < face.size(); ++k) faces.Add({face[0], face[k], face[k + 1]});
@@ -158,20 +167,28 @@ std::string OffText(const PolygonMesh& mesh, const FaceList& faces) {
 
 Status WriteMesh(const PolygonMesh& mesh, const std::filesystem::path& path,
                  const MeshWriteOptions& options) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kMeshWriteStage, [&] {
     const std::string file = path.string();
     const MeshFormat format = MeshFormatOf(path);
-    LINESURF_THROW_IF(format == MeshFormat::kUnknown, kInvalidInput, kStage,
+    LINESURF_THROW_IF(format == MeshFormat::kUnknown,
+                      kInvalidInput,
+                      kMeshWriteStage,
                       file << ": unknown mesh extension '" << path.extension().string()
                            << "' (expected .ply, .obj or .off)");
     const FaceList faces = CheckedFaces(mesh, options, file);
     std::string text;
     switch (format) {
-      case MeshFormat::kPly: text = PlyText(mesh, faces, options.ascii); break;
-      case MeshFormat::kObj: text = ObjText(mesh, faces); break;
-      default: text = OffText(mesh, faces); break;
+      case MeshFormat::kPly:
+        text = PlyText(mesh, faces, options.ascii);
+        break;
+      case MeshFormat::kObj:
+        text = ObjText(mesh, faces);
+        break;
+      default:
+        text = OffText(mesh, faces);
+        break;
     }
-    WriteFileAtomically(path, text, kStage);
+    WriteFileAtomically(path, text, kMeshWriteStage);
   });
 }
 

@@ -9,9 +9,9 @@
 namespace linesurf::io {
 
 Scene ReadObjLines(const std::filesystem::path& path) {
-  constexpr const char* kStage = "read_obj_lines";
+  constexpr const char* kObjLinesReaderStage = "read_obj_lines";
   const std::string file = path.string();
-  const std::string text = ReadWholeFile(path, kStage);
+  const std::string text = ReadWholeFile(path, kObjLinesReaderStage);
   std::vector<Vec3> vertices;
   Scene scene;
   LineReader reader(text);
@@ -23,16 +23,22 @@ Scene ReadObjLines(const std::filesystem::path& path) {
     const std::size_t line = reader.line_number();
     if (tokens[0] == "v") {
       Vec3 v;
-      LINESURF_THROW_IF(tokens.size() < 4, kInvalidInput, kStage,
+      LINESURF_THROW_IF(tokens.size() < 4,
+                        kInvalidInput,
+                        kObjLinesReaderStage,
                         file << ": line " << line << ": expected 'v x y z'");
       for (int k = 0; k < 3; ++k) {
         const std::string_view t = tokens[static_cast<std::size_t>(k) + 1];
-        LINESURF_THROW_IF(!ParseDouble(t, v[k]) || !std::isfinite(v[k]), kInvalidInput, kStage,
+        LINESURF_THROW_IF(!ParseDouble(t, v[k]) || !std::isfinite(v[k]),
+                          kInvalidInput,
+                          kObjLinesReaderStage,
                           file << ": line " << line << ": '" << t << "' is not a finite number");
       }
       vertices.push_back(v);
     } else if (tokens[0] == "l") {
-      LINESURF_THROW_IF(tokens.size() < 3, kInvalidInput, kStage,
+      LINESURF_THROW_IF(tokens.size() < 3,
+                        kInvalidInput,
+                        kObjLinesReaderStage,
                         file << ": line " << line << ": a line needs at least 2 vertices");
       polyline.clear();
       for (std::size_t k = 1; k < tokens.size(); ++k) {
@@ -41,7 +47,9 @@ Scene ReadObjLines(const std::filesystem::path& path) {
         const auto n = static_cast<long long>(vertices.size());
         const bool ok = ParseInt(ref, index) && index != 0;
         const long long zero_based = index > 0 ? index - 1 : n + index;
-        LINESURF_THROW_IF(!ok || zero_based < 0 || zero_based >= n, kInvalidInput, kStage,
+        LINESURF_THROW_IF(!ok || zero_based < 0 || zero_based >= n,
+                          kInvalidInput,
+                          kObjLinesReaderStage,
                           file << ": line " << line << ": vertex '" << tokens[k]
                                << "' out of range (" << n << " vertices so far)");
         polyline.push_back(static_cast<std::uint32_t>(zero_based));

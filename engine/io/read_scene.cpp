@@ -14,7 +14,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "read_scene";
+constexpr const char* kReadSceneStage = "read_scene";
 
 /// Formats whose observations are camera ids resolved through an NVM or COLMAP model.
 bool NeedsCameraModel(SceneFormat format) {
@@ -48,7 +48,7 @@ SceneFormat ResolveSceneFormat(const std::filesystem::path& path,
 
 Status SceneReadOptions::Validate(SceneFormat resolved) const {
   auto bad = [](const std::string& message) {
-    return Error{ErrorCode::kInvalidOptions, kStage, message};
+    return Error{ErrorCode::kInvalidOptions, kReadSceneStage, message};
   };
   if (resolved == SceneFormat::kAuto) {
     return bad("unknown input format: expected a .json (reference JSON), .txt (Line3D++ or LIMAP "
@@ -81,7 +81,7 @@ Expected<SceneReadResult> ReadSceneWithWarnings(const std::filesystem::path& pat
     if (!json) return json.error();
     return SceneReadResult{std::move(json->scene), std::move(json->warnings)};
   }
-  return CatchAll(kStage, [&]() -> SceneReadResult {
+  return CatchAll(kReadSceneStage, [&]() -> SceneReadResult {
     SceneReadResult result;
     if (format == SceneFormat::kObjLines) {
       result.scene = ReadObjLines(path);

@@ -18,7 +18,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "read_reference_json";
+constexpr const char* kReferenceJsonReadStage = "read_reference_json";
 
 enum class Field : std::uint8_t {
   kUnknown,
@@ -401,10 +401,12 @@ ReferenceJsonReadResult SceneSax::Finish() {
       PlaneMembership& m = scene_.memberships[SegmentId(s)];
       for (std::size_t k = plane_index_offsets_[s]; k < plane_index_offsets_[s + 1]; ++k) {
         const std::int64_t p = plane_index_items_[k];
-        LINESURF_THROW_IF(p < 0 || static_cast<std::uint64_t>(p) >= num_planes, kInvalidInput,
-                          kStage,
-                          file_ << ": lines[" << s << "].plane_index[" << k - plane_index_offsets_[s]
-                                << "]: " << p << " out of range (" << num_planes << " planes)");
+        LINESURF_THROW_IF(p < 0 || static_cast<std::uint64_t>(p) >= num_planes,
+                          kInvalidInput,
+                          kReferenceJsonReadStage,
+                          file_ << ": lines[" << s << "].plane_index["
+                                << k - plane_index_offsets_[s] << "]: " << p << " out of range ("
+                                << num_planes << " planes)");
         const PlaneId id(static_cast<std::size_t>(p));
         if (m.Contains(id)) {
           ++repeated;
@@ -437,14 +439,15 @@ ReferenceJsonReadResult SceneSax::Finish() {
 
 Expected<ReferenceJsonReadResult> ReadReferenceJsonWithWarnings(
     const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&]() -> ReferenceJsonReadResult {
-    const std::string content = ReadWholeFile(path, kStage);
+  return CatchAll(kReferenceJsonReadStage, [&]() -> ReferenceJsonReadResult {
+    const std::string content = ReadWholeFile(path, kReferenceJsonReadStage);
     SceneSax sax(path.string());
     const bool ok = nlohmann::json::sax_parse(content.data(), content.data() + content.size(),
                                               &sax, nlohmann::json::input_format_t::json,
                                               /*strict=*/true);
     if (!ok || !sax.error().empty()) {
-      ThrowError(ErrorCode::kInvalidInput, kStage,
+      ThrowError(ErrorCode::kInvalidInput,
+                 kReferenceJsonReadStage,
                  sax.error().empty() ? path.string() + ": malformed JSON" : sax.error());
     }
     return sax.Finish();

@@ -12,7 +12,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "write_reference_json";
+constexpr const char* kReferenceJsonWriteStage = "write_reference_json";
 
 void AppendJsonString(std::string& out, const std::string& s) {
   out.push_back('"');
@@ -45,7 +45,9 @@ class JsonWriter {
     out_.push_back('[');
     for (int i = 0; i < n; ++i) {
       const double v = values[i];
-      LINESURF_THROW_IF(!std::isfinite(v), kInvalidInput, kStage,
+      LINESURF_THROW_IF(!std::isfinite(v),
+                        kInvalidInput,
+                        kReferenceJsonWriteStage,
                         path_ << ": " << what << " holds a non-finite value; JSON cannot hold it");
       if (i > 0) out_.append(", ");
       AppendDouble(out_, v);
@@ -60,16 +62,20 @@ class JsonWriter {
 
 std::string SerializeScene(const Scene& scene, const std::string& path) {
   const std::size_t num_segments = scene.NumSegments();
-  LINESURF_THROW_IF(scene.observations.NumRows() != num_segments, kInvalidInput, kStage,
+  LINESURF_THROW_IF(scene.observations.NumRows() != num_segments,
+                    kInvalidInput,
+                    kReferenceJsonWriteStage,
                     path << ": scene has " << scene.observations.NumRows()
                          << " observation rows for " << num_segments << " segments");
   LINESURF_THROW_IF(scene.HasMemberships() && scene.memberships.size() != num_segments,
-                    kInvalidInput, kStage,
+                    kInvalidInput,
+                    kReferenceJsonWriteStage,
                     path << ": scene has " << scene.memberships.size() << " memberships for "
                          << num_segments << " segments");
   const bool with_residuals = !scene.residuals.empty();
   LINESURF_THROW_IF(with_residuals && scene.residuals.size() != scene.observations.NumItems(),
-                    kInvalidInput, kStage,
+                    kInvalidInput,
+                    kReferenceJsonWriteStage,
                     path << ": scene has " << scene.residuals.size() << " residuals for "
                          << scene.observations.NumItems() << " observations");
   const Vec3& t = scene.world_from_local.translation;
@@ -95,7 +101,9 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
     out.append(", \"pt_views\": [");
     const auto row = scene.observations[id];
     for (std::size_t k = 0; k < row.size(); ++k) {
-      LINESURF_THROW_IF(row[k].index() >= scene.viewpoints.size(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(row[k].index() >= scene.viewpoints.size(),
+                        kInvalidInput,
+                        kReferenceJsonWriteStage,
                         path << ": " << at << ".pt_views[" << k << "]: viewpoint id "
                              << row[k].value() << " out of range");
       if (k > 0) out.append(", ");
@@ -106,7 +114,9 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
       const PlaneMembership& m = scene.memberships[id];
       out.append(", \"plane_index\": [");
       for (std::uint8_t k = 0; k < m.count; ++k) {
-        LINESURF_THROW_IF(m.planes[k].index() >= scene.planes.size(), kInvalidInput, kStage,
+        LINESURF_THROW_IF(m.planes[k].index() >= scene.planes.size(),
+                          kInvalidInput,
+                          kReferenceJsonWriteStage,
                           path << ": " << at << ".plane_index[" << int{k} << "]: plane id "
                                << m.planes[k].value() << " out of range (" << scene.planes.size()
                                << " planes)");
@@ -146,9 +156,9 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
 }  // namespace
 
 Status WriteReferenceJson(const Scene& scene, const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kReferenceJsonWriteStage, [&] {
     const std::string text = SerializeScene(scene, path.string());
-    WriteFileAtomically(path, text, kStage);
+    WriteFileAtomically(path, text, kReferenceJsonWriteStage);
   });
 }
 

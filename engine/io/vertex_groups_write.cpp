@@ -10,11 +10,13 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kStage = "write_vg";
+constexpr const char* kVertexGroupsWriteStage = "write_vg";
 
 void AppendVec(std::string& out, const Vec3& v, const std::string& file) {
-  LINESURF_THROW_IF(
-      !v.allFinite(), kInvalidInput, kStage, file << ": a non-finite coordinate cannot be written");
+  LINESURF_THROW_IF(!v.allFinite(),
+                    kInvalidInput,
+                    kVertexGroupsWriteStage,
+                    file << ": a non-finite coordinate cannot be written");
   for (int k = 0; k < 3; ++k) {
     if (k) out += ' ';
     AppendDouble(out, v[k]);
@@ -25,7 +27,7 @@ void AppendVec(std::string& out, const Vec3& v, const std::string& file) {
 }  // namespace
 
 Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kVertexGroupsWriteStage, [&] {
     const std::string file = path.string();
     const std::size_t n = scene.segments.size();
     const Vec3& t = scene.world_from_local.translation;
@@ -81,7 +83,7 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
       }
       out += "\nnum_children: 0\n";
     }
-    WriteFileAtomically(path, out, kStage);
+    WriteFileAtomically(path, out, kVertexGroupsWriteStage);
   });
 }
 

@@ -16,7 +16,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "evidence";
+constexpr const char* kBlockEvidenceStage = "evidence";
 
 using partition::BlockComplexes;
 using partition::CellLocator;
@@ -334,7 +334,7 @@ Expected<EvidenceResult> ComputeBlockEvidence(const BlockComplexes& complexes,
                                               const EnergyOptions& options,
                                               BoundaryMode boundary,
                                               const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> EvidenceResult {
+  return CatchAll(kBlockEvidenceStage, [&]() -> EvidenceResult {
     EvidenceResult result;
     CheckEvidenceInput(scene, complexes.grid.box(), options, result.stats);
     const BlockSpace space(complexes);

@@ -9,13 +9,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr char kStage[] = "block_partition";
-
-template <typename T>
-T Take(Expected<T>&& e) {
-  if (!e) throw LinesurfException(e.error());
-  return std::move(e.value());
-}
+constexpr char kBlockPartitionStage[] = "block_partition";
 
 /// Inlier segments of every plane, from the memberships (ascending).
 std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
@@ -25,7 +19,7 @@ std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
     for (std::uint8_t k = 0; k < m.count; ++k) {
       LINESURF_THROW_IF(m.planes[k].index() >= scene.planes.size(),
                         kInvalidInput,
-                        kStage,
+                        kBlockPartitionStage,
                         "segment " << s << " names plane " << m.planes[k].index() << " of "
                                    << scene.planes.size());
       inliers[m.planes[k].index()].emplace_back(s);
@@ -38,7 +32,8 @@ std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
 
 Status ValidateBlockSize(double block_size) {
   if (std::isfinite(block_size) && block_size >= 0.0) return {};
-  return Error{ErrorCode::kInvalidOptions, kStage, "block_size must be finite and >= 0"};
+  return Error{
+      ErrorCode::kInvalidOptions, kBlockPartitionStage, "block_size must be finite and >= 0"};
 }
 
 Status BlockPartitionOptions::Validate() const {
@@ -53,32 +48,33 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
                                              const BlockPartitionOptions& options,
                                              const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
-  return CatchAll(kStage, [&]() -> BlockPartition {
+  return CatchAll(kBlockPartitionStage, [&]() -> BlockPartition {
     LINESURF_THROW_IF(!scene.planes.empty() && !scene.HasMemberships(),
                       kInvalidInput,
-                      kStage,
+                      kBlockPartitionStage,
                       "the block partition needs the planes' inliers (segment memberships)");
     BlockPartition out;
     BlockPartitionStats& stats = out.stats;
     stats.automatic_size = options.block_size == 0.0;
     stats.block_size = options.block_size;
     if (stats.automatic_size) {
-      stats.size_choice = Take(partition::ChooseBlockSize(
+      stats.size_choice = ValueOrThrow(partition::ChooseBlockSize(
           scene.segments.raw(), box, options.size_rule, scene.memberships.raw()));
       stats.block_size = stats.size_choice.block_size;
     }
-    const partition::BlockGrid grid = Take(partition::BlockGrid::Create(box, stats.block_size));
+    const partition::BlockGrid grid =
+        ValueOrThrow(partition::BlockGrid::Create(box, stats.block_size));
     stats.dims = grid.dims();
 
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
     for (const auto& list : inliers) stats.planes_without_inliers += list.empty() ? 1 : 0;
-    out.regions = Take(
+    out.regions = ValueOrThrow(
         partition::ComputePlaneSupport(grid, scene.segments.raw(), inliers, options.support, ctx));
     stats.seconds_support =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    out.complexes = Take(partition::BuildBlockComplexes(
+    out.complexes = ValueOrThrow(partition::BuildBlockComplexes(
         grid, scene.planes.raw(), out.regions, options.complex, ctx));
     return out;
   });

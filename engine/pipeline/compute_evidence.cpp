@@ -14,7 +14,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "evidence";
+constexpr const char* kComputeEvidenceStage = "evidence";
 /// Fixed-point scale of the accumulated weights (segment_evidence.cpp): 2^-32 resolution.
 constexpr double kFixedPointScale = 4294967296.0;
 /// Largest fixed-point total: every accumulated cost must stay below it, or the sums wrap.
@@ -135,7 +135,7 @@ Status CheckEnergyScale(const Scene& scene, const Box3& box, const EnergyOptions
 Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& scene,
                                          const EnergyOptions& options, BoundaryMode boundary,
                                          const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> EvidenceResult {
+  return CatchAll(kComputeEvidenceStage, [&]() -> EvidenceResult {
     EvidenceResult result;
     CheckEvidenceInput(scene, cx.box, options, result.stats);
     const ComplexSpace space(cx);

@@ -7,14 +7,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "detect_scene_planes";
-
-/// Unwraps a stage result or rethrows its error unchanged.
-template <typename T>
-T Take(Expected<T>&& e) {
-  if (!e) throw LinesurfException(e.error());
-  return std::move(e.value());
-}
+constexpr const char* kDetectScenePlanesStage = "detect_scene_planes";
 
 }  // namespace
 
@@ -24,18 +17,18 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
                                                 const RunContext& ctx,
                                                 StageTimer* timer,
                                                 const partition::BlockSizeRule* auto_blocks) noexcept {
-  return CatchAll(kStage, [&]() -> DetectedScene {
+  return CatchAll(kDetectScenePlanesStage, [&]() -> DetectedScene {
     DetectedScene out;
     if (timer != nullptr) timer->Start("sanitize");
     out.given_planes = scene.planes.size();
     scene.planes.clear();
     scene.memberships.clear();
-    SanitizeResult sane = Take(SanitizeScene(std::move(scene), sanitize));
+    SanitizeResult sane = ValueOrThrow(SanitizeScene(std::move(scene), sanitize));
     out.scene = std::move(sane.scene);
     out.input_segment = std::move(sane.input_segment);
     out.sanitize_stats = sane.stats;
     out.warnings = std::move(sane.warnings);
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kDetectScenePlanesStage);
 
     if (timer != nullptr) timer->Start("detect");
     PlaneDetectionOptions options = detect;
@@ -47,12 +40,12 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
         box.Extend(s.p2);
       }
       const partition::BlockSizeChoice choice =
-          Take(partition::ChooseBlockSize(segments, box, *auto_blocks));
+          ValueOrThrow(partition::ChooseBlockSize(segments, box, *auto_blocks));
       // One block is the whole scene: keep the monolithic detection (its exact result).
       if (choice.halvings > 0) options.block_size = choice.block_size;
     }
     out.detection_block_size = options.block_size;
-    PlaneDetectionResult detected = Take(DetectPlanes(out.scene, options, ctx));
+    PlaneDetectionResult detected = ValueOrThrow(DetectPlanes(out.scene, options, ctx));
     out.scene.planes = std::move(detected.planes);
     out.scene.memberships = std::move(detected.memberships);
     out.support = std::move(detected.support);

@@ -26,7 +26,7 @@ using partition::SeamFace;
 using partition::SeamFacet;
 using partition::VertexKey;
 
-constexpr const char* kStage = "extract_block_surface";
+constexpr const char* kExtractBlockSurfaceStage = "extract_block_surface";
 /// Rounded vertices are within 1e-10 (relative) of the exact point (exact_predicates.cpp); two
 /// triples whose rounded points are closer than this (relative to the scene's coordinates) are
 /// candidates for one point, decided exactly.
@@ -72,7 +72,8 @@ FacetId OtherFacetOfCell(const CellComplex& c, FacetId f, EdgeId e) {
   for (const FacetId g : c.edge_facets[e]) {
     if (g != f && (c.facet_positive_cell[g] == cell || c.facet_negative_cell[g] == cell)) return g;
   }
-  LINESURF_THROW_IF(true, kInternal, kStage, "facet edge without a second facet of its cell");
+  LINESURF_THROW_IF(
+      true, kInternal, kExtractBlockSurfaceStage, "facet edge without a second facet of its cell");
   return {};
 }
 
@@ -334,7 +335,8 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
     const RawCorner& c = *corners[k];
     const std::uint32_t u = mv.of_corner[k];
     const std::uint32_t v = mv.of_corner[k + 1 < end ? k + 1 : begin];
-    LINESURF_THROW_IF(u == v, kInternal, kStage, "two corners of a face are one point");
+    LINESURF_THROW_IF(
+        u == v, kInternal, kExtractBlockSurfaceStage, "two corners of a face are one point");
     out.vertices.push_back(u);
     out.edges.push_back(c.edge);
     out.lines.push_back({c.p, c.q});
@@ -392,13 +394,15 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
     const auto direction = [&](std::size_t k) {
       return s.corner_vertex[line_corners[k].corner] == line_corners[k].lo ? 1 : -1;
     };
-    LINESURF_THROW_IF(
-        m % 2 != 0, kInternal, kStage, "an edge on a block face has " << m << " surface faces");
+    LINESURF_THROW_IF(m % 2 != 0,
+                      kInternal,
+                      kExtractBlockSurfaceStage,
+                      "an edge on a block face has " << m << " surface faces");
     if (m == 2) {
       LINESURF_THROW_IF(
           direction(i) == direction(i + 1) || line_corners[i].face == line_corners[i + 1].face,
           kInternal,
-          kStage,
+          kExtractBlockSurfaceStage,
           "the two faces on an edge are not oriented alike");
       const std::uint32_t a = line_corners[i].face;
       const std::uint32_t b = line_corners[i + 1].face;
@@ -426,7 +430,7 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
         const std::uint32_t next = order[(k + 1) % m];
         LINESURF_THROW_IF(around[next].direction < 0,
                           kInternal,
-                          kStage,
+                          kExtractBlockSurfaceStage,
                           "faces around an edge on a block face do not alternate");
         const LineCorner& b = line_corners[i + next];
         s.partner[a.corner] = b.face;
@@ -450,16 +454,16 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
                                                  std::span<const std::uint8_t> labels,
                                                  const ExtractOptions& options,
                                                  const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> BlockExtractResult {
+  return CatchAll(kExtractBlockSurfaceStage, [&]() -> BlockExtractResult {
     const std::vector<std::size_t> cell_offsets = partition::GlobalCellOffsets(cx);
     LINESURF_THROW_IF(options.merge_coplanar && options.triangulate,
                       kInvalidOptions,
-                      kStage,
+                      kExtractBlockSurfaceStage,
                       "merge_coplanar gives non-convex faces: not with triangulate");
     LINESURF_THROW_IF(
         labels.size() != cell_offsets.back(),
         kInvalidInput,
-        kStage,
+        kExtractBlockSurfaceStage,
         "labels has " << labels.size() << " entries for " << cell_offsets.back() << " cells");
     const std::size_t num_blocks = cx.blocks.size();
     // Seams by lower block (they are listed by (lower block, axis)), block edges numbered
@@ -483,7 +487,7 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
         parts[b] = collector.Collect(b, edge_offset[b], lower, seam_begin[b]);
       });
     });
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
 
     // All faces and corners in output order.
     std::vector<const RawCorner*> corners;
@@ -524,7 +528,7 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
             Subdivide(cx, mv, on_faces, distance, corners, face_begin[f], face_begin[f + 1]);
       });
     });
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
 
     SurfaceCycles s;
     std::vector<LineCorner> line_corners;

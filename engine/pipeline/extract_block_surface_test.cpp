@@ -144,7 +144,7 @@ void ExpectValidSurface(const PolygonMesh& mesh, double volume) {
   EXPECT_TRUE(m->oriented);
   EXPECT_FALSE(m->self_intersecting);
   EXPECT_NEAR(m->signed_volume, volume, 1e-9 * std::max(1.0, std::abs(volume)));
-  EXPECT_EQ(testing::CountTJunctions(mesh), 0u);
+  EXPECT_EQ(linesurf::testing::CountTJunctions(mesh), 0u);
 }
 
 void ExpectSameMesh(const PolygonMesh& a, const PolygonMesh& b) {
@@ -493,7 +493,7 @@ TEST(ExtractBlockSurface, MergeCoplanarJoinsFacetsOfOnePlaneAcrossBlockFaces) {
 }
 
 TEST(ExtractBlockSurface, SameMeshForAnyThreadCount) {
-  const testing::RealThreadCounts real;
+  const linesurf::testing::RealThreadCounts real;
   const Box3 box{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const std::vector<Plane3> planes = RandomPlanes(12, box, 9);
   const BlockComplexes all = Build(box, 0.5, planes);
@@ -502,7 +502,7 @@ TEST(ExtractBlockSurface, SameMeshForAnyThreadCount) {
   const std::vector<std::uint8_t> labels = RandomLabels(cx, 9, volume);
   const BlockExtractResult one = Stitch(cx, labels, {}, 1);
   ExpectValidSurface(one.mesh, volume);
-  for (const int threads : testing::kThreadCounts) {
+  for (const int threads : linesurf::testing::kThreadCounts) {
     const BlockExtractResult other = Stitch(cx, labels, {}, threads);
     ExpectSameMesh(one.mesh, other.mesh);
     EXPECT_EQ(one.face_facet, other.face_facet);

@@ -8,7 +8,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "extract_surface";
+constexpr const char* kExtractSurfaceStage = "extract_surface";
 
 /// The facets between cells of different labels as cycles oriented from full to empty, in
 /// FacetId order; `face_of_facet` receives the face of every facet (kNoIndex off the surface).
@@ -46,11 +46,11 @@ SurfaceCycles CollectSurfaceFaces(const CellComplex& cx,
 Expected<ExtractResult> ExtractSurface(const CellComplex& cx,
                                        std::span<const std::uint8_t> labels,
                                        const ExtractOptions& options) noexcept {
-  return CatchAll(kStage, [&]() -> ExtractResult {
+  return CatchAll(kExtractSurfaceStage, [&]() -> ExtractResult {
     LINESURF_THROW_IF(
         labels.size() != cx.NumCells(),
         kInvalidInput,
-        kStage,
+        kExtractSurfaceStage,
         "labels has " << labels.size() << " entries for " << cx.NumCells() << " cells");
     std::vector<FacetId> facet_of_face;
     std::vector<std::uint32_t> face_of_facet;

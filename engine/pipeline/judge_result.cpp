@@ -5,7 +5,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "reconstruct";
+constexpr const char* kJudgeResultStage = "reconstruct";
 /// A closed surface needs at least this many planes (a tetrahedron).
 constexpr std::size_t kMinPlanesForSolid = 4;
 /// Beyond this multiple of the scene diagonal, sigma makes every data term negligible next to
@@ -131,7 +131,7 @@ ResultJudgement JudgeResult(const ResultFacts& f) {
        << (f.interior ? "full" : "empty") << " (" << ModeName(f.interior)
        << " scene): " << EmptySurfaceCauses(f);
     for (const std::string& w : j.warnings) os << "; " << w;
-    j.error = Error{ErrorCode::kDegenerate, kStage, os.str()};
+    j.error = Error{ErrorCode::kDegenerate, kJudgeResultStage, os.str()};
     return j;
   }
   if (!f.topology.closed || !f.topology.manifold) {
@@ -145,7 +145,7 @@ ResultJudgement JudgeResult(const ResultFacts& f) {
   if (f.interior ? !(volume < 0.0) : !(volume > 0.0)) {
     os << "the surface is inverted: signed volume " << volume << " for an " << ModeName(f.interior)
        << " scene (expected " << (f.interior ? "< 0" : "> 0") << ")";
-    j.error = Error{ErrorCode::kDegenerate, kStage, os.str()};
+    j.error = Error{ErrorCode::kDegenerate, kJudgeResultStage, os.str()};
   }
   return j;
 }

@@ -21,14 +21,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "reconstruct";
-
-/// Unwraps a stage result or rethrows its error unchanged.
-template <typename T>
-T Take(Expected<T>&& e) {
-  if (!e) throw LinesurfException(e.error());
-  return std::move(e.value());
-}
+constexpr const char* kReconstructStage = "reconstruct";
 
 /// Observing viewpoints whose cell is labelled full (inside the solid: against the evidence).
 void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, CellId>& cells,
@@ -113,7 +106,7 @@ Status ReconstructOptions::Validate() const {
 Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
                                                        const ReconstructOptions& options,
                                                        const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> PreparedReconstruction {
+  return CatchAll(kReconstructStage, [&]() -> PreparedReconstruction {
     if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
     RunContext stage_ctx;
     ConfigureStageContext(options, ctx, stage_ctx);
@@ -126,24 +119,30 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     Scene scene;
     if (options.use_given_planes) {
       timer.Start("sanitize");
-      LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(),
+                        kInvalidInput,
+                        kReconstructStage,
                         "use_given_planes: the scene has no planes or plane memberships");
-      SanitizeResult sane = Take(SanitizeScene(input, options.sanitize));
+      SanitizeResult sane = ValueOrThrow(SanitizeScene(input, options.sanitize));
       scene = std::move(sane.scene);
       prepared.input_segment = std::move(sane.input_segment);
       prepared.warnings = std::move(sane.warnings);
       stats.input_segments = sane.stats.input_segments;
       facts.viewpoints_dropped = sane.stats.dropped_bad_viewpoints;
-      stage_ctx.ThrowIfCancelled(kStage);
+      stage_ctx.ThrowIfCancelled(kReconstructStage);
       timer.Start("detect");  // nothing to detect: the report lists the same stages either way
-      stats.epsilon = Take(ResolveEpsilon(scene, options.planes, stage_ctx));
+      stats.epsilon = ValueOrThrow(ResolveEpsilon(scene, options.planes, stage_ctx));
     } else {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
       const bool blocks = options.engine == Engine::kBlocks;
       DetectedScene detected =
-          Take(SanitizeAndDetectPlanes(input, options.sanitize, detect, stage_ctx, &timer,
-                                       blocks ? &options.detection_blocks : nullptr));
+          ValueOrThrow(SanitizeAndDetectPlanes(input,
+                                               options.sanitize,
+                                               detect,
+                                               stage_ctx,
+                                               &timer,
+                                               blocks ? &options.detection_blocks : nullptr));
       stats.detection_block_size = detected.detection_block_size;
       scene = std::move(detected.scene);
       prepared.input_segment = std::move(detected.input_segment);
@@ -155,7 +154,9 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       facts.detection_epsilon = detected.detection_stats.epsilon;
       stats.epsilon = std::move(detected.detection_stats.epsilon_estimate);
     }
-    LINESURF_THROW_IF(scene.planes.empty(), kDegenerate, kStage,
+    LINESURF_THROW_IF(scene.planes.empty(),
+                      kDegenerate,
+                      kReconstructStage,
                       "no plane: nothing to reconstruct from");
     // The derived option bounds, before the complex (ComputeEvidence checks them again).
     if (Status scale = CheckEnergyScale(scene, SceneBox(scene, options.box_margin), options.energy);
@@ -168,7 +169,7 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     if (options.engine == Engine::kBlocks) {
       BlockPartitionOptions partition_options = options.blocks;
       partition_options.complex = options.complex;
-      prepared.blocks = Take(BuildBlockPartition(scene, box, partition_options, stage_ctx));
+      prepared.blocks = ValueOrThrow(BuildBlockPartition(scene, box, partition_options, stage_ctx));
       const partition::BlockComplexes& bc = prepared.blocks->complexes;
       prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
       stats.planes_in_complex = scene.planes.size() - prepared.blocks->stats.planes_without_inliers;
@@ -183,8 +184,8 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
         stats.vertices += b.complex.NumVertices();
       }
     } else {
-      partition::CellComplexResult built =
-          Take(partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
+      partition::CellComplexResult built = ValueOrThrow(
+          partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
       prepared.warnings.insert(prepared.warnings.end(), built.warnings.begin(),
                                built.warnings.end());
       stats.planes_in_complex = built.stats.planes_used;
@@ -224,7 +225,7 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
 Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared,
                                           const ReconstructOptions& options,
                                           const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> ReconstructResult {
+  return CatchAll(kReconstructStage, [&]() -> ReconstructResult {
     if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
     RunContext stage_ctx;
     ConfigureStageContext(options, ctx, stage_ctx);
@@ -242,25 +243,26 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     timer.Start("evidence");
     const BoundaryMode boundary = interior ? BoundaryMode::kInterior : BoundaryMode::kExterior;
     EvidenceResult evidence =
-        prepared.blocks ? Take(ComputeBlockEvidence(prepared.blocks->complexes, scene,
-                                                    options.energy, boundary, stage_ctx))
-                        : Take(ComputeEvidence(prepared.complex, scene, options.energy, boundary,
-                                               stage_ctx));
+        prepared.blocks
+            ? ValueOrThrow(ComputeBlockEvidence(
+                  prepared.blocks->complexes, scene, options.energy, boundary, stage_ctx))
+            : ValueOrThrow(
+                  ComputeEvidence(prepared.complex, scene, options.energy, boundary, stage_ctx));
     result.warnings.insert(result.warnings.end(), evidence.warnings.begin(),
                            evidence.warnings.end());
 
     timer.Start("solve");
     const std::vector<std::uint32_t> block_of_cell = SolveBlocks(prepared, options.solver);
-    const solver::LabelingResult labeling =
-        Take(solver::SolveLabeling(evidence.energy, block_of_cell, options.solver, stage_ctx));
+    const solver::LabelingResult labeling = ValueOrThrow(
+        solver::SolveLabeling(evidence.energy, block_of_cell, options.solver, stage_ctx));
 
     timer.Start("extract");
     ExtractOptions extract;
     extract.outside_full = interior;
     extract.triangulate = options.triangulate;
     if (prepared.blocks) {
-      BlockExtractResult surface =
-          Take(ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));
+      BlockExtractResult surface = ValueOrThrow(
+          ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));
       const OpenSeamSurface open =
           MeasureOpenSeamSurface(prepared.blocks->complexes, surface.mesh, surface.face_facet);
       facts.open_seam_area = open.area;
@@ -269,7 +271,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       result.mesh = std::move(surface.mesh);
       stats.split_vertices = surface.stats.split_vertices;
     } else {
-      ExtractResult surface = Take(ExtractSurface(prepared.complex, labeling.labels, extract));
+      ExtractResult surface =
+          ValueOrThrow(ExtractSurface(prepared.complex, labeling.labels, extract));
       result.mesh = std::move(surface.mesh);
       stats.split_vertices = surface.stats.split_vertices;
     }
@@ -295,8 +298,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     // Figures without ground truth, in the local frame, on a surface the judgement accepted.
     if (options.measure_quality) {
       timer.Start("quality");
-      stats.quality = Take(MeasureSurfaceQuality(result.mesh, scene, stats.epsilon.epsilon,
-                                                 options.quality, stage_ctx));
+      stats.quality = ValueOrThrow(MeasureSurfaceQuality(
+          result.mesh, scene, stats.epsilon.epsilon, options.quality, stage_ctx));
       stats.quality_measured = true;
       timer.Stop();
     }

@@ -9,7 +9,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "sanitize_scene";
+constexpr const char* kSanitizeSceneStage = "sanitize_scene";
 
 /// Normals whose length differs from 1 by more than this are counted as renormalised; below it
 /// the difference is rounding of a unit vector written in decimal (Andalusian: 4e-16).
@@ -58,7 +58,7 @@ std::vector<std::string> WarningsFor(const SanitizeStats& s, const SanitizeOptio
 
 Status SanitizeOptions::Validate() const {
   auto bad = [](const std::string& what) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "SanitizeOptions." + what};
+    return Error{ErrorCode::kInvalidOptions, kSanitizeSceneStage, "SanitizeOptions." + what};
   };
   if (!(min_segment_length_rel >= 0.0 && min_segment_length_rel < 1.0)) {
     return bad("min_segment_length_rel must be in [0, 1)");
@@ -77,14 +77,17 @@ Status SanitizeOptions::Validate() const {
 
 Expected<SanitizeResult> SanitizeScene(Scene in, const SanitizeOptions& options) noexcept {
   if (Status valid = options.Validate(); !valid) return valid.error();
-  return CatchAll(kStage, [&]() -> SanitizeResult {
+  return CatchAll(kSanitizeSceneStage, [&]() -> SanitizeResult {
     const std::size_t num_segments = in.NumSegments();
     const bool no_rows = in.observations.NumRows() == 0;  // a scene built without observations
-    LINESURF_THROW_IF(!no_rows && in.observations.NumRows() != num_segments, kInvalidInput, kStage,
+    LINESURF_THROW_IF(!no_rows && in.observations.NumRows() != num_segments,
+                      kInvalidInput,
+                      kSanitizeSceneStage,
                       "scene has " << in.observations.NumRows() << " observation rows for "
                                    << num_segments << " segments");
-    LINESURF_THROW_IF(in.HasMemberships() && in.memberships.size() != num_segments, kInvalidInput,
-                      kStage,
+    LINESURF_THROW_IF(in.HasMemberships() && in.memberships.size() != num_segments,
+                      kInvalidInput,
+                      kSanitizeSceneStage,
                       "scene has " << in.memberships.size() << " plane memberships for "
                                    << num_segments << " segments");
     SanitizeResult result;
@@ -214,7 +217,8 @@ Expected<SanitizeResult> SanitizeScene(Scene in, const SanitizeOptions& options)
     if (out.NumSegments() == 0) {
       std::string why = num_segments == 0 ? "the scene has no segments" : "";
       for (const std::string& w : result.warnings) why += (why.empty() ? "" : "; ") + w;
-      ThrowError(ErrorCode::kInvalidInput, kStage, "no usable segment left (" + why + ")");
+      ThrowError(
+          ErrorCode::kInvalidInput, kSanitizeSceneStage, "no usable segment left (" + why + ")");
     }
 
     // Re-anchor far plane points at the plane point closest to the data centre.

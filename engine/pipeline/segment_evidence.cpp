@@ -17,7 +17,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "evidence";
+constexpr const char* kSegmentEvidenceStage = "evidence";
 /// Fixed-point scale of the accumulated weights: 2^-32 resolution, totals up to 2^31.
 constexpr double kFixedPointScale = 4294967296.0;
 /// Segments per parallel work item (fixed, so chunking never depends on the thread count).
@@ -310,23 +310,25 @@ void CheckEvidenceInput(const Scene& scene,
   if (const Status st = options.Validate(); !st) throw LinesurfException(st.error());
   LINESURF_THROW_IF(scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
                     kInvalidInput,
-                    kStage,
+                    kSegmentEvidenceStage,
                     "memberships has " << scene.memberships.size() << " entries for "
                                        << scene.NumSegments() << " segments");
   LINESURF_THROW_IF(scene.observations.NumRows() != scene.NumSegments(),
                     kInvalidInput,
-                    kStage,
+                    kSegmentEvidenceStage,
                     "observations has " << scene.observations.NumRows() << " rows for "
                                         << scene.NumSegments() << " segments");
   for (std::size_t s = 0; s < scene.NumSegments(); ++s) {
     const SegmentId id(s);
     const std::uint8_t count = scene.HasMemberships() ? scene.memberships[id].count : 0;
-    LINESURF_THROW_IF(
-        count > 2, kInvalidInput, kStage, "segment " << s << " has " << count << " planes");
+    LINESURF_THROW_IF(count > 2,
+                      kInvalidInput,
+                      kSegmentEvidenceStage,
+                      "segment " << s << " has " << count << " planes");
     for (std::uint8_t k = 0; k < count; ++k) {
       LINESURF_THROW_IF(scene.memberships[id].planes[k].index() >= scene.planes.size(),
                         kInvalidInput,
-                        kStage,
+                        kSegmentEvidenceStage,
                         "segment " << s << ": plane index out of range");
     }
     ++stats.segments_with_planes[count];
@@ -335,7 +337,7 @@ void CheckEvidenceInput(const Scene& scene,
   for (const ViewpointId v : scene.observations.items()) {
     LINESURF_THROW_IF(v.index() >= scene.viewpoints.size(),
                       kInvalidInput,
-                      kStage,
+                      kSegmentEvidenceStage,
                       "observation of viewpoint " << v.index() << " out of range");
   }
   stats.sigma = options.sigma ? *options.sigma : DefaultSigma(scene);
@@ -389,13 +391,13 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
               ProcessSegment(c, SegmentId(s), acc.structural[chunk]);
             }
             const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
-            ctx.ReportProgress(kStage,
+            ctx.ReportProgress(kSegmentEvidenceStage,
                                static_cast<double>(finished) / static_cast<double>(num_chunks));
           }
         },
         tbb::simple_partitioner{});
   });
-  LINESURF_THROW_IF(stopped.load(), kCancelled, kStage, "cancelled");
+  LINESURF_THROW_IF(stopped.load(), kCancelled, kSegmentEvidenceStage, "cancelled");
 
   // Viewpoint prior, per observation.
   const std::int64_t w_prior = ToFixed(options.viewpoint_prior_weight);

@@ -21,7 +21,7 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr const char* kStage = "surface_quality";
+constexpr const char* kSurfaceQualityStage = "surface_quality";
 /// Segments per parallel task; fixed so the chunking never depends on the thread count.
 constexpr std::size_t kSegmentGrain = 64;
 constexpr int kMaxSamplesPerSegment = 1024;
@@ -71,7 +71,7 @@ std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& 
 }
 
 MeshIndex IndexMesh(const PolygonMesh& mesh) {
-  MeshIndex index{partition::TriangleTree(mesh, kStage, "surface"), {}, 0};
+  MeshIndex index{partition::TriangleTree(mesh, kSurfaceQualityStage, "surface"), {}, 0};
   index.face_component = FaceComponents(mesh, index.num_components);
   return index;
 }
@@ -184,7 +184,7 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
   LINESURF_THROW_IF(
       scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
       kInvalidInput,
-      kStage,
+      kSurfaceQualityStage,
       "memberships: " << scene.memberships.size() << " for " << scene.NumSegments() << " segments");
   const MeshIndex index = IndexMesh(mesh);
   const double fit = options.fit_factor * epsilon;
@@ -204,7 +204,7 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
         }
       },
       tbb::simple_partitioner{});
-  ctx.ThrowIfCancelled(kStage);
+  ctx.ThrowIfCancelled(kSurfaceQualityStage);
 
   SurfaceQuality q;
   q.epsilon = epsilon;
@@ -273,13 +273,16 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
 
 Status SurfaceQualityOptions::Validate() const {
   if (!(fit_factor > 0.0 && std::isfinite(fit_factor))) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "fit_factor must be > 0"};
+    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "fit_factor must be > 0"};
   }
   if (min_lines_per_component < 0) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "min_lines_per_component must be >= 0"};
+    return Error{
+        ErrorCode::kInvalidOptions, kSurfaceQualityStage, "min_lines_per_component must be >= 0"};
   }
   if (samples_per_segment < 1 || samples_per_segment > kMaxSamplesPerSegment) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "samples_per_segment must be in [1, 1024]"};
+    return Error{ErrorCode::kInvalidOptions,
+                 kSurfaceQualityStage,
+                 "samples_per_segment must be in [1, 1024]"};
   }
   return {};
 }
@@ -291,9 +294,9 @@ Expected<SurfaceQuality> MeasureSurfaceQuality(const PolygonMesh& mesh,
                                                const RunContext& ctx) noexcept {
   if (Status s = options.Validate(); !s) return s.error();
   if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "epsilon must be > 0"};
+    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
   }
-  return CatchAll(kStage, [&] {
+  return CatchAll(kSurfaceQualityStage, [&] {
     return RunInArena(ctx, [&] { return Measure(mesh, scene, epsilon, options, ctx); });
   });
 }

@@ -13,7 +13,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "block_complexes";
+constexpr char kBlockComplexesStage[] = "block_complexes";
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -32,12 +32,12 @@ std::vector<std::vector<PlaneId>> PlanesPerBlock(const BlockGrid& grid,
     const std::int64_t b = regions.blocks[i];
     LINESURF_THROW_IF(b < 0 || b >= grid.NumBaseBlocks(),
                       kInvalidInput,
-                      kStage,
+                      kBlockComplexesStage,
                       "support region block " << b << " is outside the grid");
     for (const PlaneId p : regions.block_planes[BlockId(i)]) {
       LINESURF_THROW_IF(p.index() >= num_planes,
                         kInvalidInput,
-                        kStage,
+                        kBlockComplexesStage,
                         "support region names plane " << p.index() << " of " << num_planes);
       out[static_cast<std::size_t>(b)].push_back(p);
     }
@@ -107,7 +107,7 @@ Expected<BlockComplexes> BuildBlockComplexes(const BlockGrid& grid,
                                              const CellComplexOptions& options,
                                              const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
-  return CatchAll(kStage, [&]() -> BlockComplexes {
+  return CatchAll(kBlockComplexesStage, [&]() -> BlockComplexes {
     auto start = std::chrono::steady_clock::now();
     BlockComplexes out{grid, {}, {}, {}, {}, {}};
     for (const Plane3& p : planes) out.plane_coefficients.push_back(InputCoefficients(p));
@@ -143,7 +143,7 @@ Expected<BlockComplexes> BuildBlockComplexes(const BlockGrid& grid,
     }
     out.stats.blocks = n;
     out.stats.seconds_complexes = SecondsSince(start);
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kBlockComplexesStage);
 
     start = std::chrono::steady_clock::now();
     for (std::size_t b = 0; b < n; ++b) {
@@ -170,7 +170,7 @@ Expected<BlockComplexes> BuildBlockComplexes(const BlockGrid& grid,
                                   FacePolygons(upper, face.axis));
       });
     });
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kBlockComplexesStage);
     out.stats.seam_faces = out.seams.size();
     for (const SeamFace& face : out.seams) out.stats.seam_facets += face.facets.size();
     out.stats.seconds_overlay = SecondsSince(start);

@@ -15,7 +15,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "cell_complex";
+constexpr char kBuildCellComplexStage[] = "cell_complex";
 /// Cells visited between two cancellation polls inside one plane insertion.
 constexpr std::uint32_t kCancelPollCells = 4096;
 
@@ -320,7 +320,7 @@ void Builder::Insert(std::uint32_t pid, const RunContext& ctx) {
   edge_memo_.clear();
   const std::size_t num_cells = cell_facets_.size();
   for (std::uint32_t c = 0; c < num_cells; ++c) {
-    if (c % kCancelPollCells == kCancelPollCells - 1) ctx.ThrowIfCancelled(kStage);
+    if (c % kCancelPollCells == kCancelPollCells - 1) ctx.ThrowIfCancelled(kBuildCellComplexStage);
     if (BoxSide(planes[pid], cell_lo_[c], cell_hi_[c]) != 0) continue;
     bool has_pos = false, has_neg = false;
     for (const std::uint32_t f : cell_facets_[c]) {
@@ -528,7 +528,9 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
   const auto start = std::chrono::steady_clock::now();
   LINESURF_THROW_IF(box.IsEmpty() || !box.min.allFinite() || !box.max.allFinite() ||
                         !(box.min.array() < box.max.array()).all(),
-                    kInvalidInput, kStage, "the box must be finite with min < max on every axis");
+                    kInvalidInput,
+                    kBuildCellComplexStage,
+                    "the box must be finite with min < max on every axis");
   CellComplexResult result;
   CellComplexStats& stats = result.stats;
   stats.planes_input = input.size();
@@ -590,13 +592,15 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
   add_warning(stats.planes_duplicate, "same or opposite of an earlier plane");
 
   for (std::size_t k = 0; k < sources.size(); ++k) {
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kBuildCellComplexStage);
     builder.Insert(static_cast<std::uint32_t>(kNumBoxPlanes + k), ctx);
-    LINESURF_THROW_IF(options.max_cells > 0 && builder.NumCells() > options.max_cells,
-                      kResourceExhausted, kStage,
-                      "more than max_cells = " << options.max_cells << " cells after "
-                                               << k + 1 << " planes");
-    ctx.ReportProgress(kStage, static_cast<double>(k + 1) / static_cast<double>(sources.size()));
+    LINESURF_THROW_IF(
+        options.max_cells > 0 && builder.NumCells() > options.max_cells,
+        kResourceExhausted,
+        kBuildCellComplexStage,
+        "more than max_cells = " << options.max_cells << " cells after " << k + 1 << " planes");
+    ctx.ReportProgress(kBuildCellComplexStage,
+                       static_cast<double>(k + 1) / static_cast<double>(sources.size()));
   }
   result.complex = builder.Finish(box, sources);
   stats.exact_fallbacks = counter.exact_fallbacks.load();
@@ -608,7 +612,9 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
 
 Status CellComplexOptions::Validate() const {
   if (!(max_centre_offset_in_diagonals > 0)) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "max_centre_offset_in_diagonals must be > 0"};
+    return Error{ErrorCode::kInvalidOptions,
+                 kBuildCellComplexStage,
+                 "max_centre_offset_in_diagonals must be > 0"};
   }
   return {};
 }
@@ -617,7 +623,7 @@ Expected<CellComplexResult> BuildCellComplex(const Box3& box, std::span<const Pl
                                              const CellComplexOptions& options,
                                              const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
-  return CatchAll(kStage, [&] { return BuildOne(box, planes, options, ctx); });
+  return CatchAll(kBuildCellComplexStage, [&] { return BuildOne(box, planes, options, ctx); });
 }
 
 Expected<std::vector<CellComplexResult>> BuildCellComplexes(
@@ -625,17 +631,18 @@ Expected<std::vector<CellComplexResult>> BuildCellComplexes(
     const CellComplexOptions& options, const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
   if (planes_per_box.size() != boxes.size()) {
-    return Error{ErrorCode::kInvalidInput, kStage, "one plane list per box is required"};
+    return Error{
+        ErrorCode::kInvalidInput, kBuildCellComplexStage, "one plane list per box is required"};
   }
-  return CatchAll(kStage, [&] {
+  return CatchAll(kBuildCellComplexStage, [&] {
     std::vector<Expected<CellComplexResult>> results(boxes.size(), Error{});
     RunInArena(ctx, [&] {
       tbb::parallel_for(std::size_t{0}, boxes.size(), [&](std::size_t b) {
         if (ctx.ShouldStop()) {
-          results[b] = Error{ErrorCode::kCancelled, kStage, "cancelled"};
+          results[b] = Error{ErrorCode::kCancelled, kBuildCellComplexStage, "cancelled"};
           return;
         }
-        results[b] = CatchAll(kStage, [&] {
+        results[b] = CatchAll(kBuildCellComplexStage, [&] {
           RunContext quiet;  // per-box builds report no progress of their own
           quiet.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
           return BuildOne(boxes[b], planes_per_box[b], options, quiet);

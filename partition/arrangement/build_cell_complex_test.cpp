@@ -26,13 +26,6 @@ Box3 MakeBox(const Vec3& lo, const Vec3& hi) {
   return box;
 }
 
-Plane3 MakePlane(const Vec3& point, const Vec3& normal) {
-  Plane3 p;
-  p.point = point;
-  p.normal = normal;
-  return p;
-}
-
 CellComplexResult Build(const Box3& box, const std::vector<Plane3>& planes) {
   auto result = BuildCellComplex(box, planes, {}, RunContext{});
   EXPECT_TRUE(result.has_value()) << (result ? "" : result.error().ToString());
@@ -96,7 +89,7 @@ TEST(BuildCellComplex, AxisAlignedGridCounts) {
       for (int k = 1; k <= count[axis]; ++k) {
         Vec3 point = Vec3::Zero();
         point[axis] = -1.0 + 2.0 * k / (count[axis] + 1) + 0.01;
-        planes.push_back(MakePlane(point, Vec3::Unit(axis) * (k % 2 == 0 ? 1.0 : -1.0)));
+        planes.push_back(Plane3{point, Vec3::Unit(axis) * (k % 2 == 0 ? 1.0 : -1.0)});
       }
     }
     const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
@@ -146,7 +139,7 @@ TEST(BuildCellComplex, RandomPlanesInGeneralPosition) {
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 point(rng.Uniform(box.min.x(), box.max.x()), rng.Uniform(box.min.y(), box.max.y()),
                        rng.Uniform(box.min.z(), box.max.z()));
-      planes.push_back(MakePlane(point, RandomUnit(rng)));
+      planes.push_back(Plane3{point, RandomUnit(rng)});
     }
     std::size_t lines = 0, points = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -176,7 +169,7 @@ TEST(BuildCellComplex, TenPlanesThroughOneLine) {
   std::vector<Plane3> planes;
   for (int k = 0; k < 10; ++k) {
     const double angle = std::numbers::pi * k / 10.0 + 0.05;
-    planes.push_back(MakePlane(Vec3::Zero(), Vec3(std::cos(angle), std::sin(angle), 0.0)));
+    planes.push_back(Plane3{Vec3::Zero(), Vec3(std::cos(angle), std::sin(angle), 0.0)});
   }
   const auto r = Build(MakeBox(Vec3(-1, -0.7, -1), Vec3(1.3, 1, 0.5)), planes);
   EXPECT_EQ(r.complex.NumCells(), 20u);
@@ -192,7 +185,7 @@ TEST(BuildCellComplex, TenPlanesThroughOneLine) {
 TEST(BuildCellComplex, SixPlanesThroughOnePoint) {
   Rng rng(1000 * 3 + 0);
   std::vector<Plane3> planes;
-  for (int k = 0; k < 6; ++k) planes.push_back(MakePlane(Vec3::Zero(), RandomUnit(rng)));
+  for (int k = 0; k < 6; ++k) planes.push_back(Plane3{Vec3::Zero(), RandomUnit(rng)});
   const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1.5, 1)), planes);
   EXPECT_EQ(r.complex.NumCells(), 6u * 5u + 2u);  // central arrangement in general position
   ExpectValidWithVolume(r.complex);
@@ -200,14 +193,14 @@ TEST(BuildCellComplex, SixPlanesThroughOnePoint) {
 
 TEST(BuildCellComplex, DuplicateOppositeTouchingAndOutsidePlanesAreSkipped) {
   std::vector<Plane3> planes{
-      MakePlane(Vec3(0.25, 0, 0), Vec3(1, 0, 0)),
-      MakePlane(Vec3(0.25, 0.5, 0.5), Vec3(1, 0, 0)),   // duplicate
-      MakePlane(Vec3(0.25, 0, 0), Vec3(-1, 0, 0)),      // opposite
-      MakePlane(Vec3(-1, -1, -1), Vec3(1, 1, 1)),       // touches the corner only
-      MakePlane(Vec3(1, 0, 0), Vec3(1, 0, 0)),          // on a box face
-      MakePlane(Vec3(3, 0, 0), Vec3(1, 0, 0)),          // misses the box
-      MakePlane(Vec3(0, 0, 0), Vec3(0, 0, 0)),          // invalid
-      MakePlane(Vec3(0, 0.1, 0), Vec3(0, 1, 0)),
+      Plane3{Vec3(0.25, 0, 0), Vec3(1, 0, 0)},
+      Plane3{Vec3(0.25, 0.5, 0.5), Vec3(1, 0, 0)},  // duplicate
+      Plane3{Vec3(0.25, 0, 0), Vec3(-1, 0, 0)},     // opposite
+      Plane3{Vec3(-1, -1, -1), Vec3(1, 1, 1)},      // touches the corner only
+      Plane3{Vec3(1, 0, 0), Vec3(1, 0, 0)},         // on a box face
+      Plane3{Vec3(3, 0, 0), Vec3(1, 0, 0)},         // misses the box
+      Plane3{Vec3(0, 0, 0), Vec3(0, 0, 0)},         // invalid
+      Plane3{Vec3(0, 0.1, 0), Vec3(0, 1, 0)},
   };
   const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
   EXPECT_EQ(r.stats.planes_used, 2u);
@@ -225,19 +218,20 @@ TEST(BuildCellComplex, DuplicateOppositeTouchingAndOutsidePlanesAreSkipped) {
 TEST(BuildCellComplex, NearlyCoincidentAndDegenerateMix) {
   Rng rng(1000 * 11 + 0);
   std::vector<Plane3> planes{
-      MakePlane(Vec3(0.3, 0, 0), Vec3(1, 0, 0)),
-      MakePlane(Vec3(0.3 + 1e-9, 0, 0), Vec3(1, 0, 0)),
-      MakePlane(Vec3(0.3, 0, 0), Vec3(1, 1e-9, 0).normalized()),
-      MakePlane(Vec3(-1, -1, -1), Vec3(1, -1, 0.5)),  // through a corner, crossing the box
-      MakePlane(Vec3::Zero(), Vec3(1, 0, 0)),
-      MakePlane(Vec3::Zero(), Vec3(0, 1, 0)),
-      MakePlane(Vec3::Zero(), Vec3(0, 0, 1)),
-      MakePlane(Vec3::Zero(), Vec3(1, 1, 0)),
-      MakePlane(Vec3::Zero(), Vec3(1, -1, 0)),
-      MakePlane(Vec3::Zero(), Vec3(1, 1, 1)),
+      Plane3{Vec3(0.3, 0, 0), Vec3(1, 0, 0)},
+      Plane3{Vec3(0.3 + 1e-9, 0, 0), Vec3(1, 0, 0)},
+      Plane3{Vec3(0.3, 0, 0), Vec3(1, 1e-9, 0).normalized()},
+      Plane3{Vec3(-1, -1, -1), Vec3(1, -1, 0.5)},  // through a corner, crossing the box
+      Plane3{Vec3::Zero(), Vec3(1, 0, 0)},
+      Plane3{Vec3::Zero(), Vec3(0, 1, 0)},
+      Plane3{Vec3::Zero(), Vec3(0, 0, 1)},
+      Plane3{Vec3::Zero(), Vec3(1, 1, 0)},
+      Plane3{Vec3::Zero(), Vec3(1, -1, 0)},
+      Plane3{Vec3::Zero(), Vec3(1, 1, 1)},
   };
   for (int k = 0; k < 8; ++k) {
-    planes.push_back(MakePlane(Vec3(rng.Uniform(-0.5, 0.5), rng.Uniform(-0.5, 0.5), 0), RandomUnit(rng)));
+    planes.push_back(
+        Plane3{Vec3(rng.Uniform(-0.5, 0.5), rng.Uniform(-0.5, 0.5), 0), RandomUnit(rng)});
   }
   const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
   EXPECT_EQ(r.stats.planes_used, planes.size());
@@ -257,7 +251,7 @@ TEST(BuildCellComplex, LatticeOfCoincidentPlanes) {
       const Vec3 point(0.25 * (static_cast<double>(rng.Below(7)) - 3.0),
                        0.25 * (static_cast<double>(rng.Below(7)) - 3.0),
                        0.25 * (static_cast<double>(rng.Below(7)) - 3.0));
-      planes.push_back(MakePlane(point, normals[rng.Below(normals.size())]));
+      planes.push_back(Plane3{point, normals[rng.Below(normals.size())]});
     }
     const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
     SCOPED_TRACE(trial);
@@ -287,8 +281,8 @@ TEST(BuildCellComplexes, IdenticalForAnyThreadCount) {
   Rng rng(1000 * 5 + 0);
   std::vector<Plane3> planes;
   for (int k = 0; k < 14; ++k) {
-    planes.push_back(MakePlane(Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), rng.Uniform(-1, 1)),
-                               RandomUnit(rng)));
+    planes.push_back(
+        Plane3{Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), rng.Uniform(-1, 1)), RandomUnit(rng)});
   }
   std::vector<Box3> boxes;
   for (int i = 0; i < 4; ++i) {
@@ -316,7 +310,7 @@ TEST(BuildCellComplexes, IdenticalForAnyThreadCount) {
 
 TEST(BuildCellComplex, CancelAndCellLimit) {
   std::vector<Plane3> planes;
-  for (int k = 0; k < 6; ++k) planes.push_back(MakePlane(Vec3(0.1 * k - 0.25, 0, 0), Vec3(1, 0, 0)));
+  for (int k = 0; k < 6; ++k) planes.push_back(Plane3{Vec3(0.1 * k - 0.25, 0, 0), Vec3(1, 0, 0)});
   const Box3 box = MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1));
   RunContext cancelled;
   cancelled.is_cancelled = [] { return true; };
@@ -334,10 +328,10 @@ TEST(BuildCellComplex, CancelAndCellLimit) {
 
 TEST(BuildCellComplex, FarPlaneReferencePointsInLocalFrame) {
   // Planes given by points 2,000 units away (as in real inputs) still split the local box.
-  std::vector<Plane3> planes{MakePlane(Vec3(2000, 0.2, 0), Vec3(0, 1, 0)),
-                             MakePlane(Vec3(0.3, -2000, 0), Vec3(1, 0, 0)),
-                             MakePlane(Vec3(0, 0, 0.1) + 2000 * Vec3(1, -1, 0).normalized(),
-                                       Vec3(0.1, 0.1, 1).normalized())};
+  std::vector<Plane3> planes{
+      Plane3{Vec3(2000, 0.2, 0), Vec3(0, 1, 0)},
+      Plane3{Vec3(0.3, -2000, 0), Vec3(1, 0, 0)},
+      Plane3{Vec3(0, 0, 0.1) + 2000 * Vec3(1, -1, 0).normalized(), Vec3(0.1, 0.1, 1).normalized()}};
   const auto r = Build(MakeBox(Vec3(-1, -1, -1), Vec3(1, 1, 1)), planes);
   EXPECT_EQ(r.stats.planes_used, 3u);
   EXPECT_EQ(r.complex.NumCells(), 8u);

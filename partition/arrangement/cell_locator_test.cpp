@@ -15,13 +15,6 @@
 namespace linesurf::partition {
 namespace {
 
-Plane3 MakePlane(const Vec3& point, const Vec3& normal) {
-  Plane3 p;
-  p.point = point;
-  p.normal = normal;
-  return p;
-}
-
 CellComplex BuildRandom(std::uint64_t seed, std::size_t n, bool with_degenerate) {
   Rng rng(seed);
   Box3 box;
@@ -29,14 +22,15 @@ CellComplex BuildRandom(std::uint64_t seed, std::size_t n, bool with_degenerate)
   box.max = Vec3(1, 1, 1);
   std::vector<Plane3> planes;
   if (with_degenerate) {
-    planes.push_back(MakePlane(Vec3::Zero(), Vec3(1, 0, 0)));
-    planes.push_back(MakePlane(Vec3::Zero(), Vec3(0, 1, 0)));
-    planes.push_back(MakePlane(Vec3::Zero(), Vec3(1, 1, 0)));
-    planes.push_back(MakePlane(Vec3::Zero(), Vec3(0, 0, 1)));
+    planes.push_back(Plane3{Vec3::Zero(), Vec3(1, 0, 0)});
+    planes.push_back(Plane3{Vec3::Zero(), Vec3(0, 1, 0)});
+    planes.push_back(Plane3{Vec3::Zero(), Vec3(1, 1, 0)});
+    planes.push_back(Plane3{Vec3::Zero(), Vec3(0, 0, 1)});
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 normal = Vec3(rng.Normal(), rng.Normal(), rng.Normal()).normalized();
-    planes.push_back(MakePlane(Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)), normal));
+    planes.push_back(
+        Plane3{Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)), normal});
   }
   auto r = BuildCellComplex(box, planes, {}, RunContext{});
   EXPECT_TRUE(r.has_value());
@@ -197,8 +191,8 @@ TEST(CellLocator, LatticeQueriesOnPlanesEdgesAndVertices) {
     return step * (static_cast<double>(rng.Below(2 * half + 1)) - half);
   };
   for (int k = 0; k < 24; ++k) {
-    planes.push_back(MakePlane(Vec3(lattice(0.25, 3), lattice(0.25, 3), lattice(0.25, 3)),
-                               normals[rng.Below(normals.size())]));
+    planes.push_back(Plane3{Vec3(lattice(0.25, 3), lattice(0.25, 3), lattice(0.25, 3)),
+                            normals[rng.Below(normals.size())]});
   }
   Box3 box;
   box.min = Vec3(-1, -1, -1);

@@ -11,7 +11,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "seam_overlay";
+constexpr char kSeamOverlayStage[] = "seam_overlay";
 /// Padding of the rounded polygon boxes, relative to the face's size, before exact clipping:
 /// far above the error of rounded vertices (their certified boxes are at most 1e-10 relative
 /// wide, exact_predicates.cpp).
@@ -138,7 +138,8 @@ std::vector<SeamPolygon> FacePolygons(const BlockComplex& block, int local_face)
           break;
         }
       }
-      LINESURF_THROW_IF(!other.IsValid(), kInternal, kStage, "facet edge without a second facet");
+      LINESURF_THROW_IF(
+          !other.IsValid(), kInternal, kSeamOverlayStage, "facet edge without a second facet");
       const std::size_t local = c.facet_plane[other].index();
       const bool positive = c.facet_positive_cell[other] == poly.cell;
       // Box planes point into the block; the global key of a max face points the other way.

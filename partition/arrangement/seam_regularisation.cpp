@@ -19,7 +19,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "seam_regularisation";
+constexpr char kSeamRegularisationStage[] = "seam_regularisation";
 
 /// Pieces of an edge shorter than this fraction of the block size are rounding slivers between
 /// breakpoints that are one point exactly.
@@ -405,11 +405,11 @@ bool ParallelFor(const RunContext& ctx, std::size_t n, Fn&& fn) {
 
 Expected<SeamRegularisation> ComputeSeamRegularisation(const BlockComplexes& cx,
                                                        const RunContext& ctx) noexcept {
-  return CatchAll(kStage, [&]() -> SeamRegularisation {
+  return CatchAll(kSeamRegularisationStage, [&]() -> SeamRegularisation {
     SeamRegularisation out;
     const std::size_t num_blocks = cx.blocks.size();
     const auto cancelled = [] {
-      return LinesurfException(Error{ErrorCode::kCancelled, kStage, "cancelled"});
+      return LinesurfException(Error{ErrorCode::kCancelled, kSeamRegularisationStage, "cancelled"});
     };
 
     // Edges: every block's boundary edges, grouped by line, pieces along each line.

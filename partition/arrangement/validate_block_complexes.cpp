@@ -9,9 +9,10 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "validate_block_complexes";
+constexpr char kValidateBlockComplexesStage[] = "validate_block_complexes";
 
-#define LINESURF_CHECK(cond, msg) LINESURF_THROW_IF(!(cond), kInternal, kStage, msg)
+#define LINESURF_CHECK(cond, msg) \
+  LINESURF_THROW_IF(!(cond), kInternal, kValidateBlockComplexesStage, msg)
 
 bool Near(double value, double expected, double tolerance) {
   return std::abs(value - expected) <= tolerance * std::abs(expected);
@@ -21,8 +22,9 @@ void CheckBlock(const BlockComplexes& cx, std::size_t b, double tolerance) {
   const BlockComplex& block = cx.blocks[b];
   const CellComplex& c = block.complex;
   if (Status ok = ValidateCellComplex(c); !ok) {
-    throw LinesurfException(Error{
-        ErrorCode::kInternal, kStage, "block " + std::to_string(b) + ": " + ok.error().message});
+    throw LinesurfException(Error{ErrorCode::kInternal,
+                                  kValidateBlockComplexesStage,
+                                  "block " + std::to_string(b) + ": " + ok.error().message});
   }
   const Box3 box = cx.grid.BlockBox({0, block.base});
   LINESURF_CHECK(c.box.min == box.min && c.box.max == box.max,
@@ -139,7 +141,7 @@ void CheckSeam(const BlockComplexes& cx, std::size_t s, double tolerance) {
 }  // namespace
 
 Status ValidateBlockComplexes(const BlockComplexes& cx, double relative_tolerance) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kValidateBlockComplexesStage, [&] {
     LINESURF_CHECK(static_cast<std::int64_t>(cx.blocks.size()) == cx.grid.NumBaseBlocks(),
                    "not one complex per base block");
     for (std::size_t b = 0; b < cx.blocks.size(); ++b) {

@@ -10,9 +10,10 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "validate_cell_complex";
+constexpr char kValidateCellComplexStage[] = "validate_cell_complex";
 
-#define LINESURF_CHECK(cond, msg) LINESURF_THROW_IF(!(cond), kInternal, kStage, msg)
+#define LINESURF_CHECK(cond, msg) \
+  LINESURF_THROW_IF(!(cond), kInternal, kValidateCellComplexStage, msg)
 
 int SignAt(const CellComplex& cx, VertexId v, ComplexPlaneId p) {
   const auto& t = cx.vertex_planes[v];
@@ -152,7 +153,7 @@ void Check(const CellComplex& cx) {
 }  // namespace
 
 Status ValidateCellComplex(const CellComplex& complex) noexcept {
-  return CatchAll(kStage, [&] { Check(complex); });
+  return CatchAll(kValidateCellComplexStage, [&] { Check(complex); });
 }
 
 }  // namespace linesurf::partition

@@ -9,7 +9,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "vertex_key_geometry";
+constexpr char kVertexKeyGeometryStage[] = "vertex_key_geometry";
 
 /// A plane of `at` that does not pass through `other` (exists: the planes of a triple meet in
 /// one point only). It crosses the line from `at` to `other` there, transversally.
@@ -17,7 +17,8 @@ PlaneKey TransversePlane(const BlockComplexes& cx, const VertexKey& at, const Ve
   for (const PlaneKey k : at) {
     if (SignAt(cx, other, k) != 0) return k;
   }
-  LINESURF_THROW_IF(true, kInternal, kStage, "two triples of one point given as a segment");
+  LINESURF_THROW_IF(
+      true, kInternal, kVertexKeyGeometryStage, "two triples of one point given as a segment");
   return {};
 }
 
@@ -70,7 +71,8 @@ std::vector<std::uint32_t> OrderAroundEdge(const BlockComplexes& cx,
   // U(v) = lambda * |v - u| / |l| * (n_U . l), and n_U . l = det[n_U; p; q].
   const PlaneKey at_u = TransversePlane(cx, s.u, s.v);
   const int lambda = SignAt(cx, s.v, at_u) * ExactSignDet3(cx.Coefficients(at_u).head<3>(), p, q);
-  LINESURF_THROW_IF(lambda == 0, kInternal, kStage, "edge planes do not meet in a line");
+  LINESURF_THROW_IF(
+      lambda == 0, kInternal, kVertexKeyGeometryStage, "edge planes do not meet in a line");
   // The direction of face f into itself, perpendicular to the edge, is
   // d_f = direction_f * (normal_f x (v - u)) = eps_f * (normal_f x l), eps_f = direction_f *
   // lambda.
@@ -87,7 +89,7 @@ std::vector<std::uint32_t> OrderAroundEdge(const BlockComplexes& cx,
     const AngularSigns a = signs(0, g);
     LINESURF_THROW_IF(a.orientation == 0 && a.dot > 0,
                       kInternal,
-                      kStage,
+                      kVertexKeyGeometryStage,
                       "two faces leave an edge in the same direction");
     half[g] = a.orientation > 0 ? 1 : (a.orientation < 0 ? 3 : 2);
   }
@@ -101,7 +103,7 @@ std::vector<std::uint32_t> OrderAroundEdge(const BlockComplexes& cx,
     LINESURF_THROW_IF(
         half[order[i]] == half[order[i + 1]] && signs(order[i], order[i + 1]).orientation == 0,
         kInternal,
-        kStage,
+        kVertexKeyGeometryStage,
         "two faces leave an edge in the same direction");
   }
   return order;

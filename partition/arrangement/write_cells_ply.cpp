@@ -11,7 +11,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr char kStage[] = "write_cells_ply";
+constexpr char kWriteCellsPlyStage[] = "write_cells_ply";
 
 template <typename T>
 void Put(std::string& out, T value) {
@@ -38,7 +38,10 @@ void Write(const CellComplex& cx, const std::filesystem::path& path, const Cells
     const bool positive = cx.cell_colour[c] > 0;
     for (const FacetId f : cx.cell_facets[c]) {
       const auto cycle = OutwardFacetCycle(cx, f, c);
-      LINESURF_THROW_IF(cycle.size() > 255, kInvalidInput, kStage, "facet with more than 255 vertices");
+      LINESURF_THROW_IF(cycle.size() > 255,
+                        kInvalidInput,
+                        kWriteCellsPlyStage,
+                        "facet with more than 255 vertices");
       Put(faces, static_cast<std::uint8_t>(cycle.size()));
       for (const VertexId v : cycle) {
         const auto local = std::lower_bound(cell_vertices.begin(), cell_vertices.end(), v) -
@@ -53,7 +56,7 @@ void Write(const CellComplex& cx, const std::filesystem::path& path, const Cells
     }
   }
   std::ofstream out(path, std::ios::binary);
-  LINESURF_THROW_IF(!out, kInvalidInput, kStage, "cannot open " << path.string());
+  LINESURF_THROW_IF(!out, kInvalidInput, kWriteCellsPlyStage, "cannot open " << path.string());
   out << "ply\nformat binary_little_endian 1.0\ncomment linesurf cell complex, cells shrunk by "
       << options.shrink << "\nelement vertex " << num_vertices
       << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << num_faces
@@ -61,21 +64,23 @@ void Write(const CellComplex& cx, const std::filesystem::path& path, const Cells
          "property uchar green\nproperty uchar blue\nend_header\n";
   out.write(vertices.data(), static_cast<std::streamsize>(vertices.size()));
   out.write(faces.data(), static_cast<std::streamsize>(faces.size()));
-  LINESURF_THROW_IF(!out, kInvalidInput, kStage, "cannot write " << path.string());
+  LINESURF_THROW_IF(!out, kInvalidInput, kWriteCellsPlyStage, "cannot write " << path.string());
 }
 
 }  // namespace
 
 Status CellsPlyOptions::Validate() const {
-  if (!(shrink > 0 && shrink <= 1)) return Error{ErrorCode::kInvalidOptions, kStage, "shrink must be in (0, 1]"};
-  if (!translation.allFinite()) return Error{ErrorCode::kInvalidOptions, kStage, "translation must be finite"};
+  if (!(shrink > 0 && shrink <= 1))
+    return Error{ErrorCode::kInvalidOptions, kWriteCellsPlyStage, "shrink must be in (0, 1]"};
+  if (!translation.allFinite())
+    return Error{ErrorCode::kInvalidOptions, kWriteCellsPlyStage, "translation must be finite"};
   return {};
 }
 
 Status WriteCellsPly(const CellComplex& complex, const std::filesystem::path& path,
                      const CellsPlyOptions& options) noexcept {
   if (Status ok = options.Validate(); !ok) return ok;
-  return CatchAll(kStage, [&] { Write(complex, path, options); });
+  return CatchAll(kWriteCellsPlyStage, [&] { Write(complex, path, options); });
 }
 
 }  // namespace linesurf::partition

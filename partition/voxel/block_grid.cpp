@@ -8,7 +8,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr const char* kStage = "block_grid";
+constexpr const char* kBlockGridStage = "block_grid";
 /// Keeps the indices of the deepest level within int32: 2^18 base blocks times 2^12.
 constexpr double kMaxBlocksPerAxis = 1 << 18;
 
@@ -19,7 +19,7 @@ namespace {
 void CheckBlockSize(double block_size) {
   LINESURF_THROW_IF(!(block_size > 0.0) || !std::isfinite(block_size),
                     kInvalidOptions,
-                    kStage,
+                    kBlockGridStage,
                     "block_size must be a positive finite length, got " << block_size);
 }
 
@@ -32,12 +32,12 @@ BlockGrid BlockGrid::Make(const Vec3& origin,
                           const BlockGridOptions& options) {
   LINESURF_THROW_IF(blocks.prod() > static_cast<double>(options.max_blocks),
                     kResourceExhausted,
-                    kStage,
+                    kBlockGridStage,
                     "block grid of " << blocks.transpose() << " blocks exceeds max_blocks "
                                      << options.max_blocks);
   LINESURF_THROW_IF((blocks.array() > kMaxBlocksPerAxis).any(),
                     kResourceExhausted,
-                    kStage,
+                    kBlockGridStage,
                     "block grid of " << blocks.transpose() << " blocks exceeds "
                                      << kMaxBlocksPerAxis << " blocks along one axis");
   BlockGrid grid;
@@ -51,7 +51,7 @@ BlockGrid BlockGrid::Make(const Vec3& origin,
     for (int i = 0; i < grid.dims_[a]; ++i) {
       LINESURF_THROW_IF(!(table[i] < table[i + 1]) || !std::isfinite(table[i + 1]),
                         kInvalidOptions,
-                        kStage,
+                        kBlockGridStage,
                         "block_size " << block_size << " gives an empty block along axis " << a);
     }
     grid.box_.min[a] = table.front();
@@ -63,12 +63,12 @@ BlockGrid BlockGrid::Make(const Vec3& origin,
 Expected<BlockGrid> BlockGrid::Create(const Box3& box,
                                       double block_size,
                                       const BlockGridOptions& options) noexcept {
-  return CatchAll(kStage, [&]() -> BlockGrid {
+  return CatchAll(kBlockGridStage, [&]() -> BlockGrid {
     CheckBlockSize(block_size);
     LINESURF_THROW_IF(box.IsEmpty() || !box.min.allFinite() || !box.max.allFinite() ||
                           !(box.min.array() < box.max.array()).all(),
                       kInvalidInput,
-                      kStage,
+                      kBlockGridStage,
                       "the grid box must be finite with min < max on every axis");
     const Eigen::Vector3d blocks = (box.Extent() / block_size).array().ceil().max(1.0);
     return Make(box.min, block_size, blocks, &box.max, options);
@@ -79,11 +79,11 @@ Expected<BlockGrid> BlockGrid::CreateWholeBlocks(const Vec3& origin,
                                                  double block_size,
                                                  const Eigen::Vector3d& blocks,
                                                  const BlockGridOptions& options) noexcept {
-  return CatchAll(kStage, [&]() -> BlockGrid {
+  return CatchAll(kBlockGridStage, [&]() -> BlockGrid {
     CheckBlockSize(block_size);
     LINESURF_THROW_IF(!origin.allFinite() || !blocks.allFinite() || (blocks.array() < 1.0).any(),
                       kInvalidInput,
-                      kStage,
+                      kBlockGridStage,
                       "a grid needs a finite origin and at least one block per axis");
     return Make(origin, block_size, blocks.array().floor().matrix(), nullptr, options);
   });

@@ -10,7 +10,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr const char* kStage = "block_size_rule";
+constexpr const char* kBlockSizeRuleStage = "block_size_rule";
 /// Halvings stop here whatever the density (2^18 blocks along the longest axis).
 constexpr int kMaxHalvings = 18;
 
@@ -56,13 +56,15 @@ BlockGrid Grid(const Box3& box, double size) {
 
 Status BlockSizeRule::Validate() const {
   if (!(target_segments_per_block > 0.0) || !std::isfinite(target_segments_per_block)) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "target_segments_per_block must be > 0"};
+    return Error{
+        ErrorCode::kInvalidOptions, kBlockSizeRuleStage, "target_segments_per_block must be > 0"};
   }
   if (!(target_planes_per_block > 0.0) || !std::isfinite(target_planes_per_block)) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "target_planes_per_block must be > 0"};
+    return Error{
+        ErrorCode::kInvalidOptions, kBlockSizeRuleStage, "target_planes_per_block must be > 0"};
   }
   if (!(min_block_lengths > 0.0) || !std::isfinite(min_block_lengths)) {
-    return Error{ErrorCode::kInvalidOptions, kStage, "min_block_lengths must be > 0"};
+    return Error{ErrorCode::kInvalidOptions, kBlockSizeRuleStage, "min_block_lengths must be > 0"};
   }
   return {};
 }
@@ -73,13 +75,14 @@ Expected<BlockSizeChoice> ChooseBlockSize(std::span<const Segment3> segments,
                                           std::span<const PlaneMembership> memberships) noexcept {
   if (Status ok = rule.Validate(); !ok) return ok.error();
   if (!memberships.empty() && memberships.size() != segments.size()) {
-    return Error{ErrorCode::kInvalidInput, kStage, "one membership per segment expected"};
+    return Error{
+        ErrorCode::kInvalidInput, kBlockSizeRuleStage, "one membership per segment expected"};
   }
-  return CatchAll(kStage, [&]() -> BlockSizeChoice {
+  return CatchAll(kBlockSizeRuleStage, [&]() -> BlockSizeChoice {
     const double longest = box.Extent().maxCoeff();
     LINESURF_THROW_IF(!(longest > 0.0) || !std::isfinite(longest),
                       kInvalidInput,
-                      kStage,
+                      kBlockSizeRuleStage,
                       "the scene box must have a finite, non-zero extent");
     BlockSizeChoice choice;
     choice.block_size = longest;

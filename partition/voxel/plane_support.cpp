@@ -11,7 +11,7 @@
 namespace linesurf::partition {
 namespace {
 
-constexpr const char* kStage = "plane_support";
+constexpr const char* kPlaneSupportStage = "plane_support";
 constexpr int kMaxMarginBlocks = 64;
 
 std::vector<std::int64_t> RegionOf(const BlockGrid& grid,
@@ -34,7 +34,7 @@ std::vector<std::int64_t> RegionOf(const BlockGrid& grid,
 Status PlaneSupportOptions::Validate() const {
   if (margin_blocks < 0 || margin_blocks > kMaxMarginBlocks) {
     return Error{ErrorCode::kInvalidOptions,
-                 kStage,
+                 kPlaneSupportStage,
                  "margin_blocks must be in [0, " + std::to_string(kMaxMarginBlocks) + "], got " +
                      std::to_string(margin_blocks)};
   }
@@ -67,12 +67,12 @@ Expected<PlaneSupportRegions> ComputePlaneSupport(const BlockGrid& grid,
                                                   const PlaneSupportOptions& options,
                                                   const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
-  return CatchAll(kStage, [&]() -> PlaneSupportRegions {
+  return CatchAll(kPlaneSupportStage, [&]() -> PlaneSupportRegions {
     for (std::size_t p = 0; p < inliers.size(); ++p) {
       for (const SegmentId s : inliers[p]) {
         LINESURF_THROW_IF(!s.IsValid() || s.index() >= segments.size(),
                           kInvalidInput,
-                          kStage,
+                          kPlaneSupportStage,
                           "plane " << p << ": inlier " << s.index() << " is not a segment (of "
                                    << segments.size() << ")");
       }
@@ -84,7 +84,7 @@ Expected<PlaneSupportRegions> ComputePlaneSupport(const BlockGrid& grid,
         regions[p] = RegionOf(grid, segments, inliers[p], options.margin_blocks);
       });
     });
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kPlaneSupportStage);
     return RegionsFromBlockLists(std::move(regions));
   });
 }

@@ -9,10 +9,10 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "energy_input";
+constexpr const char* kEnergyInputStage = "energy_input";
 
 Error Invalid(const std::string& message) {
-  return Error{ErrorCode::kInvalidInput, kStage, message};
+  return Error{ErrorCode::kInvalidInput, kEnergyInputStage, message};
 }
 
 // Checks one CSR group family; returns an empty string when valid.

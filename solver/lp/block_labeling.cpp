@@ -28,7 +28,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kBlockLabelingStage = "solve_labeling";
 // The bound source of a block decided by max-flow alone.
 constexpr const char* kCertificate = "pairwise certificate";
 // A pass of the dual ascent that raises the bound by less than this (relative) ends it.
@@ -409,7 +409,7 @@ class BlockSolver {
     std::ostringstream text;
     text.precision(3);
     text << message << " (" << std::fixed << Elapsed() << " s)";
-    ctx_.Log(LogLevel::kInfo, kStage, text.str());
+    ctx_.Log(LogLevel::kInfo, kBlockLabelingStage, text.str());
   }
 
   [[nodiscard]] double Elapsed() const {
@@ -417,11 +417,11 @@ class BlockSolver {
   }
 
   void CheckTime() const {
-    ctx_.ThrowIfCancelled(kStage);
+    ctx_.ThrowIfCancelled(kBlockLabelingStage);
     LINESURF_THROW_IF(
         options_.time_limit_seconds > 0.0 && Elapsed() > options_.time_limit_seconds,
         kSolverFailed,
-        kStage,
+        kBlockLabelingStage,
         "blocks stopped at the time limit of " << options_.time_limit_seconds << " s");
   }
 

@@ -19,7 +19,7 @@ namespace {
 
 // Sums of a few thousand terms: agreement of two evaluations of one labelling, and of Clp's
 // optimum with a bound made of the same LP pieces.
-constexpr double kTolerance = 1e-6;
+constexpr double kObjectiveTolerance = 1e-6;
 
 LabelingResult Solve(const EnergyInput& e,
                      std::span<const std::uint32_t> blocks,
@@ -44,8 +44,9 @@ void ExpectValid(const EnergyInput& e, const LabelingResult& r) {
       EXPECT_EQ(r.labels[c], f == CellFix::kFull ? 1 : 0) << "cell " << c;
     }
   }
-  EXPECT_NEAR(r.labels_objective, e.Evaluate(std::span<const std::uint8_t>(r.labels)), kTolerance);
-  EXPECT_LE(r.lower_bound, r.labels_objective + kTolerance);
+  EXPECT_NEAR(
+      r.labels_objective, e.Evaluate(std::span<const std::uint8_t>(r.labels)), kObjectiveTolerance);
+  EXPECT_LE(r.lower_bound, r.labels_objective + kObjectiveTolerance);
   EXPECT_TRUE(std::isfinite(r.lower_bound));
 }
 
@@ -70,8 +71,8 @@ TEST(BlockLabeling, BoundsTheOptimumOfRandomEnergiesForRandomPartitions) {
       const auto r = SolveLabeling(e, blocks, options, RunContext{});
       ASSERT_TRUE(r) << r.error().ToString();
       ExpectValid(e, *r);
-      EXPECT_LE(r->lower_bound, optimum + kTolerance) << "seed " << seed;
-      EXPECT_GE(r->labels_objective, optimum - kTolerance) << "seed " << seed;
+      EXPECT_LE(r->lower_bound, optimum + kObjectiveTolerance) << "seed " << seed;
+      EXPECT_GE(r->labels_objective, optimum - kObjectiveTolerance) << "seed " << seed;
     }
   }
 }
@@ -92,8 +93,8 @@ TEST(BlockLabeling, OneBlockGivesTheGlobalSolve) {
   EXPECT_EQ(blocks.blocks, 1u);
   EXPECT_EQ(blocks.crossing_terms, 0u);
   // The interior of the one block is the whole LP: the same bound, labels at least as good.
-  EXPECT_NEAR(blocks.lower_bound, global.lower_bound, kTolerance);
-  EXPECT_LE(blocks.labels_objective, global.labels_objective + kTolerance);
+  EXPECT_NEAR(blocks.lower_bound, global.lower_bound, kObjectiveTolerance);
+  EXPECT_LE(blocks.labels_objective, global.labels_objective + kObjectiveTolerance);
   EXPECT_EQ(blocks.relaxed, global.relaxed);
 }
 
@@ -112,7 +113,7 @@ TEST(BlockLabeling, StaysCloseToTheGlobalSolveOnGridEnergies) {
     ExpectValid(e, blocks);
     EXPECT_EQ(blocks.blocks, 8u);
     EXPECT_GT(blocks.crossing_terms, 0u);
-    EXPECT_LE(blocks.lower_bound, global.lower_bound + kTolerance) << n;
+    EXPECT_LE(blocks.lower_bound, global.lower_bound + kObjectiveTolerance) << n;
     EXPECT_LE(blocks.labels_objective, global.labels_objective * (1.0 + kMargin)) << n;
     std::printf(
         "grid %d^3, %zu blocks: global %.6f (bound %.6f), blocks %.6f (bound %.6f), "
@@ -136,8 +137,8 @@ TEST(BlockLabeling, BoundsCbcsIntegerOptimum) {
   ASSERT_EQ(optimum.status, "optimal");
   const LabelingResult blocks = Solve(e, testing::GridBlocks(spec, 4), "blocks");
   ExpectValid(e, blocks);
-  EXPECT_LE(blocks.lower_bound, optimum.labels_objective + kTolerance);
-  EXPECT_GE(blocks.labels_objective, optimum.labels_objective - kTolerance);
+  EXPECT_LE(blocks.lower_bound, optimum.labels_objective + kObjectiveTolerance);
+  EXPECT_GE(blocks.labels_objective, optimum.labels_objective - kObjectiveTolerance);
   std::printf("grid 7^3, %zu blocks: integer optimum %.6f, blocks %.6f (bound %.6f)\n",
               blocks.blocks,
               optimum.labels_objective,
@@ -181,10 +182,10 @@ TEST(BlockLabeling, CoordinationNeverRaisesTheEnergy) {
       ASSERT_TRUE(r) << r.error().ToString();
       ExpectValid(e, *r);
       EXPECT_LE(r->block_sweeps, static_cast<std::size_t>(sweeps));
-      EXPECT_LE(r->labels_objective, r->rounded_objective + kTolerance) << sweeps;
+      EXPECT_LE(r->labels_objective, r->rounded_objective + kObjectiveTolerance) << sweeps;
     }
     const auto r = SolveLabeling(e, partition, plain, RunContext{});
-    EXPECT_LE(r->labels_objective, previous + kTolerance) << sweeps;
+    EXPECT_LE(r->labels_objective, previous + kObjectiveTolerance) << sweeps;
     previous = r->labels_objective;
   }
 }

@@ -9,7 +9,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "cell_blocks";
+constexpr const char* kCellBlocksStage = "cell_blocks";
 
 }  // namespace
 
@@ -17,7 +17,7 @@ CellBlocks MakeCellBlocks(const EnergyInput& energy, std::span<const std::uint32
   const std::size_t n = energy.NumCells();
   LINESURF_THROW_IF(block_of_cell.size() != n,
                     kInvalidInput,
-                    kStage,
+                    kCellBlocksStage,
                     "block of cell: " << block_of_cell.size() << " entries for " << n << " cells");
   std::uint32_t num_blocks = 0;
   for (std::size_t c = 0; c < n; ++c) {
@@ -25,7 +25,7 @@ CellBlocks MakeCellBlocks(const EnergyInput& energy, std::span<const std::uint32
     LINESURF_THROW_IF(
         block_of_cell[c] >= n,
         kInvalidInput,
-        kStage,
+        kCellBlocksStage,
         "block of cell " << c << ": " << block_of_cell[c] << " is not below the " << n << " cells");
     num_blocks = std::max(num_blocks, block_of_cell[c] + 1);
   }

@@ -11,7 +11,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr double kTolerance = 1e-7;
+constexpr double kBoundTolerance = 1e-7;
 
 double LpOptimum(const EnergyInput& e) {
   LabelingOptions options;
@@ -33,8 +33,8 @@ TEST(DualAscent, BoundsTheLpOptimumOfRandomEnergies) {
     const EnergyInput e = testing::SmallRandomEnergy(seed);
     const ReducedEnergy reduced = ReduceEnergy(e);
     const DualAscentResult ascent = DualAscentBound(reduced, 50, 0.0);
-    EXPECT_LE(ascent.bound, LpOptimum(e) + kTolerance) << "seed " << seed;
-    EXPECT_GE(ascent.bound, TrivialBound(reduced) - kTolerance) << "seed " << seed;
+    EXPECT_LE(ascent.bound, LpOptimum(e) + kBoundTolerance) << "seed " << seed;
+    EXPECT_GE(ascent.bound, TrivialBound(reduced) - kBoundTolerance) << "seed " << seed;
   }
 }
 
@@ -47,8 +47,8 @@ TEST(DualAscent, NeverLowersTheBoundAndComesCloseOnAGridEnergy) {
   double previous = TrivialBound(reduced);
   for (int passes : {1, 5, 20, 100}) {
     const DualAscentResult ascent = DualAscentBound(reduced, passes, 0.0);
-    EXPECT_GE(ascent.bound, previous - kTolerance) << passes;
-    EXPECT_LE(ascent.bound, optimum + kTolerance) << passes;
+    EXPECT_GE(ascent.bound, previous - kBoundTolerance) << passes;
+    EXPECT_LE(ascent.bound, optimum + kBoundTolerance) << passes;
     previous = ascent.bound;
     std::printf("grid 10^3: %d passes: bound %.6f, LP optimum %.6f (%.2f %%)\n",
                 passes,

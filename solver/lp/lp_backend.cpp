@@ -21,10 +21,10 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kLpBackendStage = "solve_labeling";
 
 Error InvalidOption(const std::string& message) {
-  return Error{ErrorCode::kInvalidOptions, kStage, message};
+  return Error{ErrorCode::kInvalidOptions, kLpBackendStage, message};
 }
 
 std::string ResolveBackend(const std::string& requested, const ReducedEnergy& reduced,
@@ -135,10 +135,12 @@ LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> b
   result.lp_nonzeros = shape.nonzeros;
   result.backend = ResolveBackend(options.backend, reduced, shape.columns, options,
                                   block_of_cell.empty() ? 0 : CountBlocks(energy, block_of_cell));
-  ctx.ThrowIfCancelled(kStage);
+  ctx.ThrowIfCancelled(kLpBackendStage);
   if (result.backend == "band") return SolveInBand(energy, options, ctx, result);
   if (result.backend == "blocks") {
-    LINESURF_THROW_IF(block_of_cell.empty(), kInvalidOptions, kStage,
+    LINESURF_THROW_IF(block_of_cell.empty(),
+                      kInvalidOptions,
+                      kLpBackendStage,
                       "backend 'blocks' needs a partition of the cells into blocks");
     LabelingResult blocks = SolveInBlocks(energy, reduced, block_of_cell, options, ctx);
     blocks.lp_columns = shape.columns;
@@ -170,7 +172,8 @@ LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> b
     }
     solution = SolveIlpWithCbc(lp, reduced.NumFree(), incumbent, limits, ctx);
   } else {
-    ThrowError(ErrorCode::kInvalidOptions, kStage, "unknown backend '" + result.backend + "'");
+    ThrowError(
+        ErrorCode::kInvalidOptions, kLpBackendStage, "unknown backend '" + result.backend + "'");
   }
   LINESURF_ASSERT(solution.columns.size() >= reduced.NumFree());
 
@@ -259,11 +262,12 @@ Expected<LabelingResult> SolveLabeling(const EnergyInput& energy,
   if (Status s = options.Validate(); !s) return s.error();
   if (Status s = energy.Validate(); !s) return s.error();
   if (!block_of_cell.empty() && block_of_cell.size() != energy.NumCells()) {
-    return Error{ErrorCode::kInvalidInput, kStage,
+    return Error{ErrorCode::kInvalidInput,
+                 kLpBackendStage,
                  "block of cell: " + std::to_string(block_of_cell.size()) + " entries for " +
                      std::to_string(energy.NumCells()) + " cells"};
   }
-  return CatchAll(kStage, [&] { return Solve(energy, block_of_cell, options, ctx); });
+  return CatchAll(kLpBackendStage, [&] { return Solve(energy, block_of_cell, options, ctx); });
 }
 
 }  // namespace linesurf::solver

@@ -16,7 +16,7 @@ namespace {
 
 constexpr double kObjectiveTolerance = 1e-6;
 // Exact arithmetic on small sums of given costs.
-constexpr double kExact = 1e-9;
+constexpr double kExactObjectiveTolerance = 1e-9;
 // Relative agreement of pdhg (tolerance 1e-4) with Clp's optimum.
 constexpr double kPdhgAgreement = 1e-3;
 
@@ -52,7 +52,7 @@ class EveryBackend : public ::testing::TestWithParam<std::string> {};
 TEST_P(EveryBackend, ChainGivesTheMinCut) {
   const LabelingResult r = MustSolve(Chain(), GetParam());
   EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0}));
-  EXPECT_NEAR(r.labels_objective, 2.4, kExact);
+  EXPECT_NEAR(r.labels_objective, 2.4, kExactObjectiveTolerance);
   EXPECT_NEAR(r.relaxed_objective, 2.4, kPdhgAgreement);
 }
 
@@ -64,7 +64,7 @@ TEST_P(EveryBackend, FixedCellsAreRespected) {
   EXPECT_EQ(r.labels[0], 1);
   EXPECT_EQ(r.labels[2], 0);
   EXPECT_EQ(r.labels[5], 0);
-  EXPECT_NEAR(r.labels_objective, testing::BruteForceMinimum(e), kExact);
+  EXPECT_NEAR(r.labels_objective, testing::BruteForceMinimum(e), kExactObjectiveTolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(Solver, EveryBackend, ::testing::Values("clp", "maxflow", "pdhg", "auto"));
@@ -82,7 +82,7 @@ TEST_P(LpBackends, StructuralGroupForcesOneCellFull) {
   e.AddStructuralGroup(group, 1.0);
   const LabelingResult r = MustSolve(e, GetParam());
   EXPECT_EQ(r.labels, (std::vector<std::uint8_t>{0, 1, 0}));
-  EXPECT_NEAR(r.labels_objective, 0.1, kExact);
+  EXPECT_NEAR(r.labels_objective, 0.1, kExactObjectiveTolerance);
 }
 
 TEST_P(LpBackends, ParityTermPrefersAFlatSurface) {
@@ -100,7 +100,7 @@ TEST_P(LpBackends, ParityTermPrefersAFlatSurface) {
   e.AddParityGroup(cells, nu, 1.0);
   const LabelingResult flat = MustSolve(e, GetParam());
   EXPECT_EQ(flat.labels, (std::vector<std::uint8_t>{1, 1, 0, 0}));
-  EXPECT_NEAR(flat.labels_objective, 0.4, kExact);
+  EXPECT_NEAR(flat.labels_objective, 0.4, kExactObjectiveTolerance);
   e.parity_weights[0] = 0.1;  // now the evidence wins: crease costs 0.1 < 0.4
   const LabelingResult crease = MustSolve(e, GetParam());
   EXPECT_EQ(crease.labels, (std::vector<std::uint8_t>{1, 1, 1, 0}));
@@ -196,7 +196,7 @@ TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
   EXPECT_EQ(rounded->local_search_flips, 0u);
   EXPECT_DOUBLE_EQ(improved->rounded_objective, rounded->labels_objective);
   EXPECT_LE(improved->labels_objective, rounded->labels_objective);
-  EXPECT_GE(improved->labels_objective, improved->relaxed_objective - kExact);
+  EXPECT_GE(improved->labels_objective, improved->relaxed_objective - kExactObjectiveTolerance);
 }
 
 TEST(SolveLabeling, RejectsBadOptionsAndInput) {
@@ -315,7 +315,9 @@ TEST(SolveLabeling, CbcFindsTheBruteForceOptimum) {
     EXPECT_EQ(cbc.status, "optimal") << seed;
     EXPECT_EQ(cbc.lower_bound_source, "integer optimum") << seed;
     EXPECT_NEAR(cbc.labels_objective, best, kObjectiveTolerance) << seed;
-    EXPECT_NEAR(cbc.labels_objective, e.Evaluate(std::span<const std::uint8_t>(cbc.labels)), kExact);
+    EXPECT_NEAR(cbc.labels_objective,
+                e.Evaluate(std::span<const std::uint8_t>(cbc.labels)),
+                kExactObjectiveTolerance);
     EXPECT_NEAR(cbc.lower_bound, best, kObjectiveTolerance) << seed;
     for (std::size_t c = 0; c < e.NumCells(); ++c) {
       const CellFix f = e.fixed[CellId(c)];
@@ -385,7 +387,8 @@ TEST(ImprovedLabelling, NeverWorseThanLocalSearchAndOptimalWhereCbcProvesIt) {
       exact.backend = "cbc";
       const LabelingResult optimum = SolveWith(e, exact);
       ASSERT_EQ(optimum.status, "optimal") << seed;
-      EXPECT_LE(after.labels_objective, before.labels_objective + kExact) << backend << seed;
+      EXPECT_LE(after.labels_objective, before.labels_objective + kExactObjectiveTolerance)
+          << backend << seed;
       EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance)
           << backend << " seed " << seed;
       if (after.windows > 0) {  // the window held every free cell: the optimum is proven
@@ -409,7 +412,7 @@ TEST(ImprovedLabelling, ReachesCbcsOptimumOnASmallGridEnergy) {
   LabelingOptions defaults;
   defaults.backend = "clp";
   const LabelingResult after = SolveWith(e, defaults);
-  EXPECT_LE(after.labels_objective, before.labels_objective + kExact);
+  EXPECT_LE(after.labels_objective, before.labels_objective + kExactObjectiveTolerance);
   EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance);
   EXPECT_LE(after.lower_bound, optimum.labels_objective + kObjectiveTolerance);
 }
@@ -448,7 +451,9 @@ TEST(SolveLabeling, PdhgDualBoundIsAValidAndCloseLowerBound) {
     // Without windows: one window holding every cell would prove the (higher) integer optimum.
     const LabelingResult pdhg_only = SolveWith(r, RoundingAndLocalSearch("pdhg"));
     EXPECT_EQ(pdhg_only.lower_bound_source, "lp dual bound");
-    EXPECT_LE(pdhg_only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExact) << seed;
+    EXPECT_LE(pdhg_only.lower_bound,
+              MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
+        << seed;
   }
 }
 

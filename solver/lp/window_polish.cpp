@@ -12,7 +12,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kWindowPolishStage = "solve_labeling";
 // A relaxed value this far from 0 and 1 makes its cell a seed: well above the error of the
 // first-order backend (pdhg stops at a relative 1e-4), whose cells are never exactly integral.
 constexpr double kSeedDistance = 1e-3;
@@ -82,7 +82,7 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
   for (std::uint32_t seed : seeds) {
     if (covered[seed] != 0) continue;
     if (stats.windows == options.max_windows) break;
-    ctx.ThrowIfCancelled(kStage);
+    ctx.ThrowIfCancelled(kWindowPolishStage);
     // Few enough free cells: one window holds them all, connected or not.
     const std::vector<CellId> window =
         free.size() <= options.window_cells

@@ -50,7 +50,7 @@ SceneData CubeData() {
   return scene;
 }
 
-ReconstructOptions Exterior() {
+ReconstructOptions ExteriorOptions() {
   ReconstructOptions o;
   o.scene_mode = SceneMode::kExterior;
   return o;
@@ -88,7 +88,7 @@ FacadeCase SceneCase(std::string name,
   auto run = [spoil, planes](const fs::path&) {
     SceneData scene = CubeData();
     spoil(scene);
-    ReconstructOptions o = Exterior();
+    ReconstructOptions o = ExteriorOptions();
     o.planes = planes;
     return OutcomeOf(Reconstruct(scene.View(), o));
   };
@@ -101,7 +101,7 @@ FacadeCase OptionCase(std::string name,
                       std::function<void(ReconstructOptions&)> spoil,
                       std::string field) {
   auto run = [spoil](const fs::path&) {
-    ReconstructOptions o = Exterior();
+    ReconstructOptions o = ExteriorOptions();
     spoil(o);
     const Status validated = o.Validate();
     if (validated) return Outcome{};
@@ -132,7 +132,7 @@ FacadeCase DetectOptionCase(std::string name,
 FacadeCase CancelCase(std::string name, std::function<RunControl()> control) {
   auto run = [control](const fs::path&) {
     const SceneData scene = CubeData();
-    return OutcomeOf(Reconstruct(scene.View(), Exterior(), control()));
+    return OutcomeOf(Reconstruct(scene.View(), ExteriorOptions(), control()));
   };
   return {std::move(name), run, ErrorCode::kCancelled, {}};
 }
@@ -152,7 +152,7 @@ std::vector<FacadeCase> FacadeCases() {
 
   // Scenes: empty views, non-finite and out-of-bound coordinates, indices out of range.
   add({"empty_views",
-       [](const fs::path&) { return OutcomeOf(Reconstruct(InputScene{}, Exterior())); },
+       [](const fs::path&) { return OutcomeOf(Reconstruct(InputScene{}, ExteriorOptions())); },
        E::kInvalidInput,
        {"segment"}});
   add({"detect_empty_views",
@@ -304,7 +304,7 @@ std::vector<FacadeCase> FacadeCases() {
   add({"solve_weight_nan",
        [](const fs::path&) {
          const SceneData scene = CubeData();
-         auto prepared = Reconstruction::Prepare(scene.View(), Exterior());
+         auto prepared = Reconstruction::Prepare(scene.View(), ExteriorOptions());
          if (!prepared) return OutcomeOf(prepared);
          EnergyWeights w;
          w.visibility = kNan;

@@ -47,7 +47,7 @@ Scene CubeScene(double scale = 1.0, double offset = 0.0) {
   return scene;
 }
 
-pipeline::ReconstructOptions Exterior() {
+pipeline::ReconstructOptions ExteriorEngineOptions() {
   pipeline::ReconstructOptions o;
   o.scene_mode = pipeline::SceneMode::kExterior;
   return o;
@@ -68,36 +68,39 @@ std::vector<ApiCase> ApiCases() {
       [&](std::string name, Scene scene, pipeline::ReconstructOptions o, ErrorCode code) {
         cases.push_back({std::move(name), std::move(scene), std::move(o), code});
       };
-  add("empty_scene", Scene{}, Exterior(), ErrorCode::kInvalidInput);
+  add("empty_scene", Scene{}, ExteriorEngineOptions(), ErrorCode::kInvalidInput);
   Scene nan = CubeScene();
   for (Segment3& s : nan.segments) s.p1.x() = std::numeric_limits<double>::quiet_NaN();
-  add("every_segment_nan", nan, Exterior(), ErrorCode::kInvalidInput);
-  add("beyond_coordinate_bound", CubeScene(1.0, 1e13), Exterior(), ErrorCode::kInvalidInput);
+  add("every_segment_nan", nan, ExteriorEngineOptions(), ErrorCode::kInvalidInput);
+  add("beyond_coordinate_bound",
+      CubeScene(1.0, 1e13),
+      ExteriorEngineOptions(),
+      ErrorCode::kInvalidInput);
   Scene one = CubeScene();
   one.segments.resize(1);
   one.observations.Clear();
   one.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(std::size_t{0})});
-  add("one_segment_no_plane", one, Exterior(), ErrorCode::kDegenerate);
-  pipeline::ReconstructOptions o = Exterior();
+  add("one_segment_no_plane", one, ExteriorEngineOptions(), ErrorCode::kDegenerate);
+  pipeline::ReconstructOptions o = ExteriorEngineOptions();
   o.energy.sigma = 1e-9;
   add("sigma_1e_9", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.energy.edge_weight = 1e308;
   add("edge_weight_1e308", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.energy.visibility_weight = std::numeric_limits<double>::infinity();
   add("visibility_weight_inf", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.energy.textural_weight = 1e6;  // the largest weight, with sigma at its smallest allowed ratio
   o.energy.sigma = 1e-8;
   add("evidence_beyond_fixed_point", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.box_margin = -1.0;
   add("box_margin_negative", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.planes.epsilon = std::numeric_limits<double>::quiet_NaN();
   add("epsilon_nan", CubeScene(), o, ErrorCode::kInvalidOptions);
-  o = Exterior();
+  o = ExteriorEngineOptions();
   o.use_given_planes = true;
   add("given_planes_none", CubeScene(), o, ErrorCode::kInvalidInput);
   return cases;
@@ -126,7 +129,7 @@ TEST(LibraryApi, ReconstructHandlesGeoreferencedOffsets) {
   RunContext ctx;
   for (const double offset : {0.0, 1e6, 1e9}) {
     RecordVerdict(kKind, 0);
-    const auto result = pipeline::Reconstruct(CubeScene(1.0, offset), Exterior(), ctx);
+    const auto result = pipeline::Reconstruct(CubeScene(1.0, offset), ExteriorEngineOptions(), ctx);
     ASSERT_TRUE(result.has_value()) << offset << ": " << result.error().ToString();
     EXPECT_TRUE(result->stats.mesh_closed) << offset;
     EXPECT_NEAR(result->stats.mesh_volume, 8.0, 8.0 * 1e-6) << offset;

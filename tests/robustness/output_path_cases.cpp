@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void Scene(const fs::path& dir) { WriteFile(dir / "in.json", CubeSceneJson()); }
+void WriteInputScene(const fs::path& dir) { WriteFile(dir / "in.json", CubeSceneJson()); }
 
 void Meshes(const fs::path& dir) {
   WriteFile(dir / "result.off", CubeOff());
@@ -23,7 +23,7 @@ void Meshes(const fs::path& dir) {
 /// `in.json` plus a hard link to it under `alias` (same file, other name and extension).
 HostileCase::Maker SceneWithAlias(const std::string& alias) {
   return [alias](const fs::path& dir) {
-    Scene(dir);
+    WriteInputScene(dir);
     fs::create_hard_link(dir / "in.json", dir / alias);
   };
 }
@@ -50,38 +50,43 @@ std::vector<HostileCase> OutputPathCases() {
               "detect in.json -o out.ply",
               {"out.ply", "-o", ".json"}),
       Refused("detect_vg_extension",
-              Scene,
+              WriteInputScene,
               "detect in.json -o p.json --vg p.txt",
               {"p.txt", "--vg", ".vg"}),
-      Refused("convert_ply", Scene, "convert in.json -o out.ply", {"out.ply", ".json"}),
+      Refused("convert_ply", WriteInputScene, "convert in.json -o out.ply", {"out.ply", ".json"}),
       Refused("render_jpg", Meshes, "render --mesh gt.off -o out.jpg", {"out.jpg", ".png"}),
       Refused("arrange_cells_obj",
-              Scene,
+              WriteInputScene,
               "arrange in.json --box -2,-2,-2,2,2,2 --cells-ply c.obj",
               {"c.obj", "--cells-ply"}),
       // Outputs that are inputs (same path, or the same file under another name).
       Refused("reconstruct_report_is_input",
-              Scene,
+              WriteInputScene,
               "reconstruct in.json -o out.ply --report in.json",
               {"in.json", "--report", "input"}),
       Refused("reconstruct_report_is_input_via_dot",
-              Scene,
+              WriteInputScene,
               "reconstruct in.json -o out.ply --report ./in.json",
               {"in.json", "--report", "input"}),
-      Refused(
-          "detect_output_is_input", Scene, "detect in.json -o in.json", {"in.json", "-o", "input"}),
+      Refused("detect_output_is_input",
+              WriteInputScene,
+              "detect in.json -o in.json",
+              {"in.json", "-o", "input"}),
       Refused("detect_vg_is_input",
               SceneWithAlias("in.vg"),
               "detect in.json -o p.json --vg in.vg",
               {"in.vg", "--vg", "input"}),
       Refused("detect_report_is_input",
-              Scene,
+              WriteInputScene,
               "detect in.json -o p.json --report in.json",
               {"in.json", "--report", "input"}),
-      Refused("convert_output_is_input", Scene, "convert in.json -o in.json", {"in.json", "input"}),
+      Refused("convert_output_is_input",
+              WriteInputScene,
+              "convert in.json -o in.json",
+              {"in.json", "input"}),
       Refused("convert_output_is_input_link",
               [](const fs::path& d) {
-                Scene(d);
+                WriteInputScene(d);
                 fs::create_symlink("in.json", d / "link.json");
               },
               "convert in.json -o link.json",
@@ -107,31 +112,31 @@ std::vector<HostileCase> OutputPathCases() {
               {"in.ply", "input"}),
       // Two outputs on one file.
       Refused("reconstruct_report_is_output",
-              Scene,
+              WriteInputScene,
               "reconstruct in.json -o out.ply --report out.ply",
               {"out.ply", "--report", "-o"}),
       Refused("detect_report_is_output",
-              Scene,
+              WriteInputScene,
               "detect in.json -o p.json --report p.json",
               {"p.json", "--report", "-o"}),
       // Directories that do not exist or are not directories, special files.
       Refused("reconstruct_missing_directory",
-              Scene,
+              WriteInputScene,
               "reconstruct in.json -o nowhere/out.ply",
               {"nowhere/out.ply", "does not exist"}),
       Refused("detect_report_in_missing_directory",
-              Scene,
+              WriteInputScene,
               "detect in.json -o p.json --report nowhere/r.json",
               {"nowhere/r.json", "--report"}),
       Refused("convert_output_is_directory",
               [](const fs::path& d) {
-                Scene(d);
+                WriteInputScene(d);
                 fs::create_directory(d / "dir.json");
               },
               "convert in.json -o dir.json",
               {"dir.json", "directory"}),
       Refused("reconstruct_report_unwritable",
-              Scene,
+              WriteInputScene,
               "reconstruct in.json -o out.ply --report /proc/report.json",
               {"/proc/report.json", "--report"}),
       Refused("evaluate_json_special_file",
@@ -185,7 +190,7 @@ std::vector<HostileCase> OutputPathCases() {
   for (const auto& [command, args] : full) {
     cases.push_back(HostileCase{"output path",
                                 std::string(command) + "_stdout_full",
-                                Scene,
+                                WriteInputScene,
                                 args,
                                 3,
                                 {"standard output"},
@@ -195,7 +200,7 @@ std::vector<HostileCase> OutputPathCases() {
   // Sound paths still work (and write exactly what they name).
   cases.push_back(HostileCase{"output path",
                               "detect_all_outputs",
-                              Scene,
+                              WriteInputScene,
                               "detect in.json -o p.json --vg p.vg --report r.json",
                               0,
                               {},
@@ -204,7 +209,7 @@ std::vector<HostileCase> OutputPathCases() {
   cases.push_back(HostileCase{"output path",
                               "reconstruct_into_subdirectory",
                               [](const fs::path& d) {
-                                Scene(d);
+                                WriteInputScene(d);
                                 fs::create_directory(d / "sub");
                               },
                               "reconstruct in.json -o sub/out.ply --report sub/r.json",

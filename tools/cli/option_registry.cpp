@@ -8,7 +8,7 @@
 namespace linesurf::cli {
 namespace {
 
-constexpr const char* kStage = "config";
+constexpr const char* kOptionRegistryStage = "config";
 
 }  // namespace
 
@@ -41,10 +41,10 @@ Status OptionRegistry::ApplyConfig() {
   // A config file that cannot be read is bad input (exit 3); one naming a wrong option or value
   // is a usage error (exit 2), as the same mistake on the command line would be.
   auto unreadable = [&](const std::string& message) {
-    return Error{ErrorCode::kInvalidInput, kStage, config_path_ + ": " + message};
+    return Error{ErrorCode::kInvalidInput, kOptionRegistryStage, config_path_ + ": " + message};
   };
   auto bad = [&](const std::string& message) {
-    return Error{ErrorCode::kInvalidOptions, kStage, config_path_ + ": " + message};
+    return Error{ErrorCode::kInvalidOptions, kOptionRegistryStage, config_path_ + ": " + message};
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(config_path_, ec)) return unreadable("no such file");

@@ -16,7 +16,7 @@
 namespace linesurf {
 namespace {
 
-constexpr const char* kStage = "evaluate_mesh";
+constexpr const char* kEvaluateMeshStage = "evaluate_mesh";
 /// More samples than this take gigabytes and give shares no steadier than +-0.01 %.
 constexpr std::size_t kMaxSamplesPerMesh = 10000000;
 /// Samples per parallel task; fixed so chunking never depends on the thread count.
@@ -33,7 +33,7 @@ struct TriangleSet {
 };
 
 TriangleSet Triangulate(const PolygonMesh& mesh, const std::string& name) {
-  TriangleSet set{partition::TriangleTree(mesh, kStage, name), {}};
+  TriangleSet set{partition::TriangleTree(mesh, kEvaluateMeshStage, name), {}};
   double total = 0.0;
   for (std::size_t t = 0; t < set.tree.NumTriangles(); ++t) {
     total += set.tree.Area(t);
@@ -65,7 +65,7 @@ void ForEachChunk(std::size_t n, const RunContext* ctx, Fn&& fn) {
         fn(r.begin(), r.end());
       },
       tbb::simple_partitioner{});
-  if (ctx != nullptr) ctx->ThrowIfCancelled(kStage);
+  if (ctx != nullptr) ctx->ThrowIfCancelled(kEvaluateMeshStage);
 }
 
 DistanceStats Summarise(std::vector<double> distances) {
@@ -189,10 +189,11 @@ Expected<EvaluationResult> EvaluateMesh(const PolygonMesh& result, const Polygon
   for (const auto& [mesh, name] :
        {std::pair{&result, "result"}, std::pair{&ground_truth, "ground truth"}}) {
     if (const auto violation = CoordinateBoundViolation(*mesh)) {
-      return Error{ErrorCode::kInvalidInput, kStage, std::string(name) + " mesh: " + *violation};
+      return Error{
+          ErrorCode::kInvalidInput, kEvaluateMeshStage, std::string(name) + " mesh: " + *violation};
     }
   }
-  return CatchAll(kStage, [&] {
+  return CatchAll(kEvaluateMeshStage, [&] {
     if (ctx == nullptr) return Evaluate(result, ground_truth, options, visible_from, ctx);
     return RunInArena(*ctx, [&] { return Evaluate(result, ground_truth, options, visible_from, ctx); });
   });

@@ -22,7 +22,7 @@
 namespace linesurf {
 namespace {
 
-constexpr const char* kStage = "check_mesh_topology";
+constexpr const char* kMeshTopologyStage = "check_mesh_topology";
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -57,7 +57,9 @@ bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::
   }
   CgalMesh cgal_mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
-  LINESURF_THROW_IF(!PMP::triangulate_faces(cgal_mesh), kDegenerate, kStage,
+  LINESURF_THROW_IF(!PMP::triangulate_faces(cgal_mesh),
+                    kDegenerate,
+                    kMeshTopologyStage,
                     "a face could not be triangulated for the self-intersection test");
   using Face = CgalMesh::Face_index;
   std::vector<std::pair<Face, Face>> pairs;
@@ -85,11 +87,15 @@ MeshTopology Check(const PolygonMesh& mesh) {
   const std::size_t num_vertices = mesh.vertices.size();
   LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.front() != 0 ||
                         mesh.face_offsets.back() != mesh.face_indices.size(),
-                    kInvalidInput, kStage, "face offsets do not cover the face indices");
+                    kInvalidInput,
+                    kMeshTopologyStage,
+                    "face offsets do not cover the face indices");
   for (std::size_t i = 0; i < mesh.face_indices.size(); ++i) {
-    LINESURF_THROW_IF(mesh.face_indices[i] >= num_vertices, kInvalidInput, kStage,
-                      "face index " << i << " refers to vertex " << mesh.face_indices[i]
-                                    << " of " << num_vertices);
+    LINESURF_THROW_IF(mesh.face_indices[i] >= num_vertices,
+                      kInvalidInput,
+                      kMeshTopologyStage,
+                      "face index " << i << " refers to vertex " << mesh.face_indices[i] << " of "
+                                    << num_vertices);
   }
   MeshTopology topo;
   topo.num_faces = mesh.NumFaces();
@@ -209,9 +215,9 @@ MeshTopology Check(const PolygonMesh& mesh) {
 
 Expected<MeshTopology> CheckMeshTopology(const PolygonMesh& mesh) noexcept {
   if (const auto violation = CoordinateBoundViolation(mesh)) {
-    return Error{ErrorCode::kInvalidInput, kStage, "mesh: " + *violation};
+    return Error{ErrorCode::kInvalidInput, kMeshTopologyStage, "mesh: " + *violation};
   }
-  return CatchAll(kStage, [&] { return Check(mesh); });
+  return CatchAll(kMeshTopologyStage, [&] { return Check(mesh); });
 }
 
 }  // namespace linesurf

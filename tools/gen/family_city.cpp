@@ -13,11 +13,11 @@ namespace {
 
 constexpr double kLot = 30.0;         // lot pitch (street axis to street axis)
 constexpr double kSetback = 5.0;      // street axis to the buildable area
-constexpr double kStorey = 3.2;
+constexpr double kCityStorey = 3.2;
 constexpr double kMinFlatHeight = 6.0;
 constexpr double kMaxFlatHeight = 30.0;
 constexpr double kStreetViewSpacing = 10.0;
-constexpr double kEyeHeight = 1.6;
+constexpr double kCityEyeHeight = 1.6;
 constexpr double kHighViewHeight = 40.0;
 constexpr double kMaxViewDistance = 60.0;
 /// Building type shares: rectangle flat, rectangle gable, L-shape flat.
@@ -89,20 +89,20 @@ FamilyLayout CityLayout(const SynthSpec& spec) {
       layout.solid.AddPrism(base, Vec3(0, 0, h));
       layout.volume += (w * d - nw * nd) * h;
     }
-    AddFacadeTexture(layout, layout.solid.components().back(), kStorey);
+    AddFacadeTexture(layout, layout.solid.components().back(), kCityStorey);
   }
 
   // Viewpoints along the street axes x = i * kLot and y = j * kLot, and high above crossings.
   const int steps_per_lot = static_cast<int>(std::lround(kLot / kStreetViewSpacing));
   for (int i = 0; i <= cols; ++i) {
     for (int s = 0; s <= rows * steps_per_lot; ++s) {
-      layout.viewpoints.emplace_back(i * kLot, s * kStreetViewSpacing, kEyeHeight);
+      layout.viewpoints.emplace_back(i * kLot, s * kStreetViewSpacing, kCityEyeHeight);
     }
   }
   for (int j = 0; j <= rows; ++j) {
     for (int s = 0; s <= cols * steps_per_lot; ++s) {
       if (s % steps_per_lot == 0) continue;  // crossings are already listed
-      layout.viewpoints.emplace_back(s * kStreetViewSpacing, j * kLot, kEyeHeight);
+      layout.viewpoints.emplace_back(s * kStreetViewSpacing, j * kLot, kCityEyeHeight);
     }
   }
   for (int j = 0; j <= rows; ++j) {

@@ -13,14 +13,14 @@ constexpr double kHalfWidth = 5.0;   // x
 constexpr double kHalfDepth = 4.0;   // y
 constexpr double kWallHeight = 6.0;
 constexpr double kRoofRise = 3.0;
-constexpr double kStorey = 3.0;
+constexpr double kHouseStorey = 3.0;
 constexpr int kGroundRingViews = 16;
 constexpr double kGroundRingRadius = 18.0;
-constexpr double kEyeHeight = 1.6;
+constexpr double kHouseEyeHeight = 1.6;
 constexpr int kHighRingViews = 12;
 constexpr double kHighRingRadius = 22.0;
 constexpr double kHighRingHeight = 12.0;
-constexpr double kOutlierMargin = 1.0;
+constexpr double kHouseOutlierMargin = 1.0;
 
 }  // namespace
 
@@ -41,7 +41,7 @@ FamilyLayout HouseLayout(const SynthSpec& /*spec*/) {
   layout.solid.AddPrism(profile, Vec3(2 * w, 0, 0));
   layout.volume = (2 * w) * (2 * d) * h + 0.5 * (2 * d) * kRoofRise * (2 * w);
 
-  AddFacadeTexture(layout, layout.solid.components().back(), kStorey);
+  AddFacadeTexture(layout, layout.solid.components().back(), kHouseStorey);
   // Door (three sides; its sill is the wall's bottom edge) on the south wall.
   const Vec3 south(0, -1, 0);
   AddTextureLine(layout, {-0.45, -d, 0}, {-0.45, -d, 2.1}, south);
@@ -62,10 +62,11 @@ FamilyLayout HouseLayout(const SynthSpec& /*spec*/) {
     }
   }
 
-  AddViewRing(layout, kGroundRingViews, kGroundRingRadius, kEyeHeight);
+  AddViewRing(layout, kGroundRingViews, kGroundRingRadius, kHouseEyeHeight);
   AddViewRing(layout, kHighRingViews, kHighRingRadius, kHighRingHeight);
-  layout.outliers.box.Extend(Vec3(-w - kOutlierMargin, -d - kOutlierMargin, 0));
-  layout.outliers.box.Extend(Vec3(w + kOutlierMargin, d + kOutlierMargin, h + kRoofRise + kOutlierMargin));
+  layout.outliers.box.Extend(Vec3(-w - kHouseOutlierMargin, -d - kHouseOutlierMargin, 0));
+  layout.outliers.box.Extend(
+      Vec3(w + kHouseOutlierMargin, d + kHouseOutlierMargin, h + kRoofRise + kHouseOutlierMargin));
   return layout;
 }
 

@@ -11,9 +11,9 @@ constexpr double kDepth = 12.0;  // y
 constexpr double kNotchWidth = 7.0;
 constexpr double kNotchDepth = 5.0;
 constexpr double kHeight = 7.0;
-constexpr double kStorey = 3.2;
-constexpr double kEyeHeight = 1.6;
-constexpr double kOutlierMargin = 1.0;
+constexpr double kLshapeStorey = 3.2;
+constexpr double kLshapeEyeHeight = 1.6;
+constexpr double kLshapeOutlierMargin = 1.0;
 
 }  // namespace
 
@@ -30,12 +30,13 @@ FamilyLayout LShapeLayout(const SynthSpec& /*spec*/) {
                         {x0 + kWidth, yr, 0}};
   layout.solid.AddPrism(base, Vec3(0, 0, kHeight));
   layout.volume = (kWidth * kDepth - kNotchWidth * kNotchDepth) * kHeight;
-  AddFacadeTexture(layout, layout.solid.components().back(), kStorey);
-  AddViewRing(layout, 16, 20.0, kEyeHeight);
+  AddFacadeTexture(layout, layout.solid.components().back(), kLshapeStorey);
+  AddViewRing(layout, 16, 20.0, kLshapeEyeHeight);
   AddViewRing(layout, 12, 25.0, 14.0);
-  layout.outliers.box.Extend(Vec3(x0 - kOutlierMargin, y0 - kOutlierMargin, 0));
-  layout.outliers.box.Extend(
-      Vec3(x0 + kWidth + kOutlierMargin, y0 + kDepth + kOutlierMargin, kHeight + kOutlierMargin));
+  layout.outliers.box.Extend(Vec3(x0 - kLshapeOutlierMargin, y0 - kLshapeOutlierMargin, 0));
+  layout.outliers.box.Extend(Vec3(x0 + kWidth + kLshapeOutlierMargin,
+                                  y0 + kDepth + kLshapeOutlierMargin,
+                                  kHeight + kLshapeOutlierMargin));
   return layout;
 }
 

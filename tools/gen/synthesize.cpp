@@ -17,7 +17,7 @@
 namespace linesurf::synth {
 namespace {
 
-const char* const kStage = "synthesize";
+const char* const kSynthesizeStage = "synthesize";
 /// A viewpoint sees a line only if it is in front of one of the line's faces by at least this
 /// sine of the viewing angle (grazing views are not reconstructed by real pipelines).
 constexpr double kMinViewSine = 0.05;
@@ -380,37 +380,53 @@ const char* SegmentKindName(SegmentKind kind) noexcept {
 }
 
 Status SynthSpec::Validate() const {
-  return CatchAll(kStage, [&] {
-    LINESURF_THROW_IF(family != "cube" && family != "house" && family != "room" &&
-                          family != "lshape" && family != "floor" && family != "city",
-                      kInvalidOptions, kStage,
-                      "family: unknown family '" << family << "' (cube, house, lshape, room, floor, city)");
-    LINESURF_THROW_IF(size < 0 || size > kMaxCityBuildings, kInvalidOptions, kStage,
+  return CatchAll(kSynthesizeStage, [&] {
+    LINESURF_THROW_IF(
+        family != "cube" && family != "house" && family != "room" && family != "lshape" &&
+            family != "floor" && family != "city",
+        kInvalidOptions,
+        kSynthesizeStage,
+        "family: unknown family '" << family << "' (cube, house, lshape, room, floor, city)");
+    LINESURF_THROW_IF(size < 0 || size > kMaxCityBuildings,
+                      kInvalidOptions,
+                      kSynthesizeStage,
                       "size: " << size << " is outside [0, " << kMaxCityBuildings << "]");
-    LINESURF_THROW_IF(!(noise_sigma >= 0.0 && noise_sigma <= kMaxNoise), kInvalidOptions, kStage,
+    LINESURF_THROW_IF(!(noise_sigma >= 0.0 && noise_sigma <= kMaxNoise),
+                      kInvalidOptions,
+                      kSynthesizeStage,
                       "noise_sigma: " << noise_sigma << " is outside [0, " << kMaxNoise << "]");
     LINESURF_THROW_IF(!(outlier_fraction >= 0.0 && outlier_fraction <= kMaxOutlierFraction),
-                      kInvalidOptions, kStage,
+                      kInvalidOptions,
+                      kSynthesizeStage,
                       "outlier_fraction: " << outlier_fraction << " is outside [0, "
                                            << kMaxOutlierFraction << "]");
-    LINESURF_THROW_IF(outlier_count && (*outlier_count < 0 || *outlier_count > kMaxOutlierCount),
-                      kInvalidOptions, kStage,
-                      "outlier_count: " << *outlier_count << " is outside [0, " << kMaxOutlierCount
-                                        << "]");
+    LINESURF_THROW_IF(
+        outlier_count && (*outlier_count < 0 || *outlier_count > kMaxOutlierCount),
+        kInvalidOptions,
+        kSynthesizeStage,
+        "outlier_count: " << *outlier_count << " is outside [0, " << kMaxOutlierCount << "]");
     LINESURF_THROW_IF(max_pieces && (*max_pieces < 1 || *max_pieces > kMaxPieces),
-                      kInvalidOptions, kStage,
+                      kInvalidOptions,
+                      kSynthesizeStage,
                       "max_pieces: " << *max_pieces << " is outside [1, " << kMaxPieces << "]");
-    LINESURF_THROW_IF(max_trim && !(*max_trim >= 0.0 && *max_trim <= kMaxTrim), kInvalidOptions,
-                      kStage, "max_trim: " << *max_trim << " is outside [0, " << kMaxTrim << "]");
-    LINESURF_THROW_IF(max_views < 1 || max_views > kMaxViews, kInvalidOptions, kStage,
+    LINESURF_THROW_IF(max_trim && !(*max_trim >= 0.0 && *max_trim <= kMaxTrim),
+                      kInvalidOptions,
+                      kSynthesizeStage,
+                      "max_trim: " << *max_trim << " is outside [0, " << kMaxTrim << "]");
+    LINESURF_THROW_IF(max_views < 1 || max_views > kMaxViews,
+                      kInvalidOptions,
+                      kSynthesizeStage,
                       "max_views: " << max_views << " is outside [1, " << kMaxViews << "]");
-    LINESURF_THROW_IF(!(max_view_trim >= 0.0 && max_view_trim <= kMaxViewTrim), kInvalidOptions,
-                      kStage,
-                      "max_view_trim: " << max_view_trim << " is outside [0, " << kMaxViewTrim
-                                        << "]");
-    LINESURF_THROW_IF(!(std::abs(offset) <= kMaxOffset), kInvalidOptions, kStage,
-                      "offset: " << offset << " is outside [-" << kMaxOffset << ", " << kMaxOffset
-                                 << "]");
+    LINESURF_THROW_IF(
+        !(max_view_trim >= 0.0 && max_view_trim <= kMaxViewTrim),
+        kInvalidOptions,
+        kSynthesizeStage,
+        "max_view_trim: " << max_view_trim << " is outside [0, " << kMaxViewTrim << "]");
+    LINESURF_THROW_IF(
+        !(std::abs(offset) <= kMaxOffset),
+        kInvalidOptions,
+        kSynthesizeStage,
+        "offset: " << offset << " is outside [-" << kMaxOffset << ", " << kMaxOffset << "]");
   });
 }
 
@@ -420,7 +436,7 @@ int CityBuildingCount(const SynthSpec& spec) {
 
 Expected<SyntheticScene> Synthesize(const SynthSpec& spec) noexcept {
   if (Status valid = spec.Validate(); !valid) return valid.error();
-  return CatchAll(kStage, [&] { return Build(spec); });
+  return CatchAll(kSynthesizeStage, [&] { return Build(spec); });
 }
 
 }  // namespace linesurf::synth

@@ -9,7 +9,7 @@
 namespace linesurf::synth {
 namespace {
 
-const char* const kStage = "write_synthetic_meta";
+const char* const kSyntheticMetaStage = "write_synthetic_meta";
 
 nlohmann::json ToJson(const Vec3& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
@@ -80,13 +80,14 @@ std::string SyntheticMetaJson(const SyntheticScene& s) {
 }
 
 Status WriteSyntheticMeta(const SyntheticScene& scene, const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kSyntheticMetaStage, [&] {
     const std::string text = SyntheticMetaJson(scene);
     std::ofstream out(path, std::ios::binary);
-    LINESURF_THROW_IF(!out, kInvalidInput, kStage, path.string() << ": cannot open for writing");
+    LINESURF_THROW_IF(
+        !out, kInvalidInput, kSyntheticMetaStage, path.string() << ": cannot open for writing");
     out << text;
     out.close();
-    LINESURF_THROW_IF(!out, kInvalidInput, kStage, path.string() << ": write failed");
+    LINESURF_THROW_IF(!out, kInvalidInput, kSyntheticMetaStage, path.string() << ": write failed");
   });
 }
 

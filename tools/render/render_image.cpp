@@ -11,7 +11,7 @@
 namespace linesurf {
 namespace {
 
-constexpr const char* kStage = "render_image";
+constexpr const char* kRenderImageStage = "render_image";
 constexpr double kPi = 3.14159265358979323846;
 /// Points closer to the eye than this share of the view distance are clipped.
 constexpr double kNearFraction = 1e-3;
@@ -277,13 +277,20 @@ bool IsPresetView(const std::string& view) {
 }
 
 Image Render(const Scene* lines, const PolygonMesh* mesh, const RenderOptions& options) {
-  LINESURF_THROW_IF(lines == nullptr && mesh == nullptr, kInvalidInput, kStage,
+  LINESURF_THROW_IF(lines == nullptr && mesh == nullptr,
+                    kInvalidInput,
+                    kRenderImageStage,
                     "nothing to render: give segments, a mesh or both");
   if (mesh != nullptr) {
-    LINESURF_THROW_IF(mesh->face_offsets.empty() || mesh->face_offsets.back() != mesh->face_indices.size(),
-                      kInvalidInput, kStage, "mesh face offsets do not cover the indices");
+    LINESURF_THROW_IF(
+        mesh->face_offsets.empty() || mesh->face_offsets.back() != mesh->face_indices.size(),
+        kInvalidInput,
+        kRenderImageStage,
+        "mesh face offsets do not cover the indices");
     for (std::uint32_t v : mesh->face_indices) {
-      LINESURF_THROW_IF(v >= mesh->vertices.size(), kInvalidInput, kStage,
+      LINESURF_THROW_IF(v >= mesh->vertices.size(),
+                        kInvalidInput,
+                        kRenderImageStage,
                         "mesh face refers to vertex " << v << " of " << mesh->vertices.size());
     }
   }
@@ -295,7 +302,9 @@ Image Render(const Scene* lines, const PolygonMesh* mesh, const RenderOptions& o
   const double aspect = static_cast<double>(panel_width) / options.height;
   const Camera camera = options.camera ? *options.camera
                                        : PresetCamera(options.view, box, options.fov_degrees, aspect);
-  LINESURF_THROW_IF((camera.target - camera.eye).norm() == 0.0, kInvalidOptions, kStage,
+  LINESURF_THROW_IF((camera.target - camera.eye).norm() == 0.0,
+                    kInvalidOptions,
+                    kRenderImageStage,
                     "camera eye and target coincide");
 
   Image image;
@@ -362,7 +371,7 @@ Status RenderOptions::Validate() const {
 Expected<Image> RenderImage(const Scene* lines, const PolygonMesh* mesh,
                             const RenderOptions& options) noexcept {
   if (auto valid = options.Validate(); !valid) return valid.error();
-  return CatchAll(kStage, [&] { return Render(lines, mesh, options); });
+  return CatchAll(kRenderImageStage, [&] { return Render(lines, mesh, options); });
 }
 
 }  // namespace linesurf

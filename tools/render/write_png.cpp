@@ -11,7 +11,7 @@
 namespace linesurf {
 namespace {
 
-constexpr const char* kStage = "write_png";
+constexpr const char* kWritePngStage = "write_png";
 
 /// Only plain data lives in this frame: libpng reports errors by longjmp back to setjmp.
 bool WriteRows(std::FILE* file, const Image& image, png_bytep* rows) {
@@ -38,11 +38,13 @@ bool WriteRows(std::FILE* file, const Image& image, png_bytep* rows) {
 }  // namespace
 
 Status WritePng(const Image& image, const std::filesystem::path& path) noexcept {
-  return CatchAll(kStage, [&] {
+  return CatchAll(kWritePngStage, [&] {
     LINESURF_THROW_IF(image.width <= 0 || image.height <= 0 ||
                           image.rgb.size() != 3 * static_cast<std::size_t>(image.width) *
                                                   static_cast<std::size_t>(image.height),
-                      kInvalidInput, kStage, "image buffer does not match its size");
+                      kInvalidInput,
+                      kWritePngStage,
+                      "image buffer does not match its size");
     std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
     for (int y = 0; y < image.height; ++y) {
       // libpng's row pointers are non-const but it only reads them when writing.
@@ -50,10 +52,12 @@ Status WritePng(const Image& image, const std::filesystem::path& path) noexcept 
           image.rgb.data() + 3 * static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width));
     }
     std::FILE* file = std::fopen(path.c_str(), "wb");
-    LINESURF_THROW_IF(file == nullptr, kInvalidInput, kStage, "cannot open " << path << " for writing");
+    LINESURF_THROW_IF(
+        file == nullptr, kInvalidInput, kWritePngStage, "cannot open " << path << " for writing");
     const bool written = WriteRows(file, image, rows.data());
     const bool closed = std::fclose(file) == 0;
-    LINESURF_THROW_IF(!written || !closed, kInvalidInput, kStage, "failed to write " << path);
+    LINESURF_THROW_IF(
+        !written || !closed, kInvalidInput, kWritePngStage, "failed to write " << path);
   });
 }
 

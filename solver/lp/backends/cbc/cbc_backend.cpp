@@ -15,7 +15,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kCbcBackendStage = "solve_labeling";
 
 // Stops Cbc at the next node once the host cancels.
 class CancelHandler : public CbcEventHandler {
@@ -111,11 +111,11 @@ LpSolution SolveIlpWithCbc(const LpModel& lp,
   }
   model.branchAndBound();
 
-  LINESURF_THROW_IF(cancelled, kCancelled, kStage, "Cbc solve cancelled by the host");
+  LINESURF_THROW_IF(cancelled, kCancelled, kCbcBackendStage, "Cbc solve cancelled by the host");
   const double* best = model.bestSolution();
   LINESURF_THROW_IF(best == nullptr,
                     kSolverFailed,
-                    kStage,
+                    kCbcBackendStage,
                     "Cbc found no integral solution (status " << model.status() << ", secondary "
                                                               << model.secondaryStatus() << ")");
   solution.columns.assign(best, best + lp.NumColumns());

@@ -15,7 +15,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kClpBackendStage = "solve_labeling";
 
 // Stops Clp (status 5) when the host cancels or the wall-time limit passes. Copied by Clp into
 // the presolved model, so it only holds pointers to objects that outlive the solve.
@@ -97,10 +97,14 @@ LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
   solve_options.setPresolveType(ClpSolve::presolveOn);
   model.initialSolve(solve_options);
 
-  LINESURF_THROW_IF(cancelled, kCancelled, kStage, "Clp solve cancelled by the host");
-  LINESURF_THROW_IF(timed_out, kSolverFailed, kStage,
+  LINESURF_THROW_IF(cancelled, kCancelled, kClpBackendStage, "Clp solve cancelled by the host");
+  LINESURF_THROW_IF(timed_out,
+                    kSolverFailed,
+                    kClpBackendStage,
                     "Clp stopped at the time limit of " << options.time_limit_seconds << " s");
-  LINESURF_THROW_IF(!model.isProvenOptimal(), kSolverFailed, kStage,
+  LINESURF_THROW_IF(!model.isProvenOptimal(),
+                    kSolverFailed,
+                    kClpBackendStage,
                     "Clp failed: status " << model.status() << " (" << ClpStatusName(model.status())
                                           << "), secondary status " << model.secondaryStatus());
   const double* values = model.primalColumnSolution();

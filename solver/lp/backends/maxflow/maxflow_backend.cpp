@@ -9,18 +9,21 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kMaxflowBackendStage = "solve_labeling";
 using FlowGraph = maxflow::Graph<double, double, double>;
 
 // libmaxflow's error callback (allocation failure); never returns.
 void ThrowMaxflowError(const char* message) {
-  ThrowError(ErrorCode::kResourceExhausted, kStage, std::string("maxflow: ") + message);
+  ThrowError(
+      ErrorCode::kResourceExhausted, kMaxflowBackendStage, std::string("maxflow: ") + message);
 }
 
 }  // namespace
 
 LpSolution SolveWithMaxflow(const ReducedEnergy& reduced, const RunContext& ctx) {
-  LINESURF_THROW_IF(reduced.HasHigherOrderTerms(), kInvalidOptions, kStage,
+  LINESURF_THROW_IF(reduced.HasHigherOrderTerms(),
+                    kInvalidOptions,
+                    kMaxflowBackendStage,
                     "backend maxflow is exact only without structural and parity terms; this "
                     "energy has "
                         << reduced.structural_weights.size() << " structural and "
@@ -41,7 +44,8 @@ LpSolution SolveWithMaxflow(const ReducedEnergy& reduced, const RunContext& ctx)
     for (const auto& p : reduced.pairs) {
       graph->add_edge(static_cast<int>(p.a), static_cast<int>(p.b), p.weight, p.weight);
     }
-    LINESURF_THROW_IF(ctx.ShouldStop(), kCancelled, kStage, "cancelled before max-flow");
+    LINESURF_THROW_IF(
+        ctx.ShouldStop(), kCancelled, kMaxflowBackendStage, "cancelled before max-flow");
     graph->maxflow();
     for (int i = 0; i < n; ++i) {
       if (graph->what_segment(i, FlowGraph::SOURCE) == FlowGraph::SINK) {

@@ -15,7 +15,7 @@
 namespace linesurf::solver {
 namespace {
 
-constexpr const char* kStage = "solve_labeling";
+constexpr const char* kPdhgBackendStage = "solve_labeling";
 // Elements per parallel chunk: fixed, so every reduction has the same association for any
 // number of threads.
 constexpr std::size_t kChunk = 8192;
@@ -341,13 +341,15 @@ class Pdhg {
       s_.at.Multiply(y, aty, &aty_sum);
       ++since_restart;
       // Cancellation is polled every iteration (one iteration of a large LP takes 50-150 ms).
-      LINESURF_THROW_IF(ctx_.ShouldStop(), kCancelled, kStage, "pdhg cancelled by the host");
+      LINESURF_THROW_IF(
+          ctx_.ShouldStop(), kCancelled, kPdhgBackendStage, "pdhg cancelled by the host");
       if (it % kCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       LINESURF_THROW_IF(options_.time_limit_seconds > 0.0 && elapsed > options_.time_limit_seconds,
-                        kSolverFailed, kStage,
+                        kSolverFailed,
+                        kPdhgBackendStage,
                         "pdhg stopped at the time limit of " << options_.time_limit_seconds
                                                              << " s after " << it << " iterations");
       const double inv = 1.0 / static_cast<double>(since_restart);
@@ -405,9 +407,11 @@ class Pdhg {
       std::fill(ax_sum.begin(), ax_sum.end(), 0.0);
       std::fill(aty_sum.begin(), aty_sum.end(), 0.0);
     }
-    ThrowError(ErrorCode::kSolverFailed, kStage,
-               "pdhg reached the iteration limit of " + std::to_string(options_.pdhg_max_iterations) +
-                   " without meeting tolerance " + std::to_string(eps));
+    ThrowError(ErrorCode::kSolverFailed,
+               kPdhgBackendStage,
+               "pdhg reached the iteration limit of " +
+                   std::to_string(options_.pdhg_max_iterations) + " without meeting tolerance " +
+                   std::to_string(eps));
   }
 
  private:
