@@ -43,6 +43,24 @@ TEST_F(CliSynth, SameSeedGivesByteIdenticalFilesForAnyThreadCount) {
   EXPECT_NE(Slurp(dir_ / "a" / "meta.json"), Slurp(dir_ / "c" / "meta.json"));
 }
 
+// The bundled example was made by this command (docs/examples/house/README.md). Any compiler
+// must give the same bytes: C++ leaves the order of function arguments unspecified, and a draw
+// per argument (`Vec3(rng.Uniform(), rng.Uniform(), rng.Uniform())`) once made clang's scenes
+// differ from g++'s.
+TEST_F(CliSynth, TheExampleCommandWritesTheBundledExampleOnAnyCompiler) {
+  ASSERT_EQ(RunLinesurf(
+                "synth house --seed 1 --noise 0.01 --outliers 0.05 -o " + ShellQuote(dir_.string()),
+                dir_),
+            0)
+      << Slurp(dir_ / "stderr.txt");
+  const std::filesystem::path example = testing::SourceDir() / "docs" / "examples" / "house";
+  for (const char* file : {"lines.json", "ground_truth.ply", "meta.json"}) {
+    const std::string bundled = Slurp(example / file);
+    ASSERT_FALSE(bundled.empty()) << example / file;
+    EXPECT_TRUE(Slurp(dir_ / file) == bundled) << file << " differs from " << example / file;
+  }
+}
+
 TEST_F(CliSynth, FilesReadBackIntoASceneWithTruePlanesAndAClosedMesh) {
   ASSERT_EQ(RunLinesurf("synth cube --seed 1 -o " + ShellQuote(dir_.string()), dir_), 0)
       << Slurp(dir_ / "stderr.txt");

@@ -83,8 +83,11 @@ FamilyLayout CityLayout(const SynthSpec& spec) {
       for (const Vec3& p : base) lo = lo.cwiseMin(p);
       const double span_x = (turns % 2 == 0) ? w : d;
       const double span_y = (turns % 2 == 0) ? d : w;
-      const Vec3 shift(lot_x + rng.Uniform(0.0, buildable - span_x) - lo.x(),
-                       lot_y + rng.Uniform(0.0, buildable - span_y) - lo.y(), 0);
+      // y before x: the order g++ evaluated the constructor's arguments in, which keeps its
+      // cities (C++ leaves that order unspecified, clang went the other way).
+      const double offset_y = rng.Uniform(0.0, buildable - span_y);
+      const double offset_x = rng.Uniform(0.0, buildable - span_x);
+      const Vec3 shift(lot_x + offset_x - lo.x(), lot_y + offset_y - lo.y(), 0);
       for (Vec3& p : base) p += shift;
       layout.solid.AddPrism(base, Vec3(0, 0, h));
       layout.volume += (w * d - nw * nd) * h;

@@ -94,16 +94,31 @@ class ViewpointIndex {
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>> buckets_;
 };
 
+/// Three draws `draw(axis)` made in the order z, y, x. C++ leaves the order of the arguments of
+/// `Vec3(draw(), draw(), draw())` unspecified (g++ went right to left, clang left to right, so
+/// the two made different scenes from one seed); z, y, x keeps the scenes g++ made.
+template <typename Draw>
+Vec3 DrawZyx(Draw&& draw) {
+  const double z = draw(2);
+  const double y = draw(1);
+  const double x = draw(0);
+  return Vec3(x, y, z);
+}
+
+Vec3 UniformInCube(Rng& rng) {
+  return DrawZyx([&](int) { return rng.Uniform(-1, 1); });
+}
+
 Vec3 UniformInBall(Rng& rng, double radius) {
   while (true) {
-    const Vec3 p(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    const Vec3 p = UniformInCube(rng);
     if (p.squaredNorm() <= 1.0) return radius * p;
   }
 }
 
 Vec3 UniformDirection(Rng& rng) {
   while (true) {
-    const Vec3 p(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
+    const Vec3 p = UniformInCube(rng);
     const double n2 = p.squaredNorm();
     if (n2 <= 1.0 && n2 > 1e-6) return p / std::sqrt(n2);
   }
@@ -149,7 +164,7 @@ Vec3 MeanViewDirection(const Segment3& s, const std::vector<std::uint32_t>& view
 Vec3 EndpointNoise(const SynthSpec& spec, const Vec3& depth, Rng& rng) {
   switch (spec.noise_model) {
     case NoiseModel::kGaussian:
-      return spec.noise_sigma * Vec3(rng.Normal(), rng.Normal(), rng.Normal());
+      return spec.noise_sigma * DrawZyx([&](int) { return rng.Normal(); });
     case NoiseModel::kUniformBall:
       return UniformInBall(rng, spec.noise_sigma);
     case NoiseModel::kDepth: {
@@ -157,8 +172,12 @@ Vec3 EndpointNoise(const SynthSpec& spec, const Vec3& depth, Rng& rng) {
       const Vec3 a = depth.unitOrthogonal();
       const Vec3 b = depth.cross(a);
       const double across = spec.noise_sigma / std::sqrt(2.0);
-      return across * (rng.Normal() * a + rng.Normal() * b) +
-             std::sqrt(2.0) * spec.noise_sigma * rng.Normal() * depth;
+      // Drawn along, b, a: the order g++ evaluated the single expression in (see DrawZyx).
+      const double along = rng.Normal();
+      const double along_b = rng.Normal();
+      const double along_a = rng.Normal();
+      return across * (along_a * a + along_b * b) +
+             std::sqrt(2.0) * spec.noise_sigma * along * depth;
     }
   }
   return Vec3::Zero();
@@ -176,7 +195,8 @@ void AddNearOutlier(Scene& scene, std::size_t pieces, Rng& rng, SyntheticScene& 
   Vec3 depth = Vec3::Zero();
   for (ViewpointId v : row) depth += (scene.viewpoints[v] - piece.Midpoint()).normalized();
   depth = depth.norm() > 0.0 ? Vec3(depth.normalized()) : Vec3::UnitZ();
-  const double shift = rng.Uniform(kMinShift, kMaxShift) * (rng.Below(2) == 0 ? -1.0 : 1.0);
+  const double distance = rng.Uniform(kMinShift, kMaxShift);
+  const double shift = rng.Below(2) == 0 ? -distance : distance;
   const Vec3 axis = UniformDirection(rng);
   const Eigen::AngleAxisd turn(rng.Uniform(-kMaxTurnRad, kMaxTurnRad), axis);
   const Vec3 mid = piece.Midpoint() + shift * depth;
@@ -332,10 +352,11 @@ SyntheticScene Build(const SynthSpec& spec) {
       s.p1 = region.centre + UniformInBall(rng, region.radius);
       s.p2 = region.centre + UniformInBall(rng, region.radius);
     } else {
-      s.p1 = Vec3(rng.Uniform(region.box.min.x(), region.box.max.x()),
-                  rng.Uniform(region.box.min.y(), region.box.max.y()),
-                  rng.Uniform(region.box.min.z(), region.box.max.z()));
-      s.p2 = s.p1 + rng.Uniform(region.min_length, region.max_length) * UniformDirection(rng);
+      s.p1 = DrawZyx(
+          [&](int axis) { return rng.Uniform(region.box.min[axis], region.box.max[axis]); });
+      // The direction first: the order g++ evaluated the single expression in (see DrawZyx).
+      const Vec3 direction = UniformDirection(rng);
+      s.p2 = s.p1 + rng.Uniform(region.min_length, region.max_length) * direction;
     }
     const std::size_t wanted = 1 + rng.Below(static_cast<std::uint64_t>(spec.max_views));
     index.Near(s.Midpoint(), near);
