@@ -2,13 +2,13 @@
 # Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
 # (clang 14; modules -O1, test and CLI executables -O0, line tables only; UBSan findings abort;
 # benchmarks and the Python module are not built) and runs it; no test found is an error
-# (docs/design/sanitizers_and_fuzzing.md). Not yet a step of .ci/run (that document says why).
+# (docs/design/sanitizers_and_fuzzing.md). A step of .ci/run.
 # Usage: tools/sanitize_and_test.sh [extra ctest arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang-14 \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DLINESURF_SANITIZE=address,undefined \
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
+  -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 -DLINESURF_SANITIZE=address,undefined \
   -DLINESURF_BUILD_CLI=ON -DLINESURF_BUILD_TESTS=ON -DLINESURF_BUILD_BENCHMARKS=OFF \
   -DLINESURF_BUILD_PYTHON=OFF
 cmake --build build-asan -j "$jobs"

@@ -15,8 +15,14 @@ endfunction()
 
 set(prefix ${WORK}/prefix)
 set(host_flags "")
+set(c_host_link_flags "")
 if(NOT SANITIZE STREQUAL "")
   set(host_flags "-fsanitize=${SANITIZE}")
+  if(CC MATCHES "clang")
+    # clang links a C program with the C part of the UBSan runtime only; the library's C++ code
+    # needs the rest (__ubsan_vptr_type_cache, the dynamic-type handlers) and its libstdc++.
+    set(c_host_link_flags "-fsanitize-link-c++-runtime -lstdc++")
+  endif()
 endif()
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -46,7 +52,8 @@ foreach(host host_cpp host_c)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/docs/examples/${host} -B ${WORK}/${host}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix}
     -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_C_COMPILER=${CC}
-    -DCMAKE_CXX_FLAGS=${host_flags} -DCMAKE_C_FLAGS=${host_flags})
+    -DCMAKE_CXX_FLAGS=${host_flags} -DCMAKE_C_FLAGS=${host_flags}
+    "-DCMAKE_EXE_LINKER_FLAGS=${c_host_link_flags}")
   run(${CMAKE_COMMAND} --build ${WORK}/${host})
   run(${WORK}/${host}/${host} ${house} ${WORK}/${host}.ply)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/cli.ply ${WORK}/${host}.ply
@@ -63,7 +70,8 @@ if(PKG_CONFIG)
   execute_process(COMMAND ${PKG_CONFIG} --libs --cflags linesurf OUTPUT_VARIABLE flags
     OUTPUT_STRIP_TRAILING_WHITESPACE)
   separate_arguments(flags UNIX_COMMAND "${flags}")
-  run(${CC} ${host_flags} ${SOURCE_DIR}/docs/examples/host_c/main.c ${flags}
+  separate_arguments(c_link_flags UNIX_COMMAND "${c_host_link_flags}")
+  run(${CC} ${host_flags} ${SOURCE_DIR}/docs/examples/host_c/main.c ${flags} ${c_link_flags}
     -o ${WORK}/host_c_pkgconfig)
   message(STATUS "host_c also builds with pkg-config: ${flags}")
 endif()
