@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer in build-asan/
-# (clang 14; modules -O1, test and CLI executables -O0, line tables only; UBSan findings abort;
+# (clang 14, everything -O1 with line tables only; UBSan findings abort;
 # benchmarks and the Python module are not built) and runs it; no test found is an error
 # (docs/design/sanitizers_and_fuzzing.md). A step of .ci/run.
 # Usage: tools/sanitize_and_test.sh [extra ctest arguments]

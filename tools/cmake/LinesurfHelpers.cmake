@@ -2,7 +2,8 @@
 #   Instruments everything built after this call (our code and the tests; Debian's prebuilt
 #   libraries stay uninstrumented) with the given sanitizers, e.g. "address,undefined". UBSan
 #   findings abort the test (-fno-sanitize-recover) so that CTest sees them; -O1 keeps the suite
-#   fast enough for CI; -g1 (line tables) is all a report's stack needs, at a quarter less
+#   fast enough for CI, for the tests too (the linker keeps one copy of an inline function, so -O0
+#   tests would hand the modules unoptimised Eigen); -g1 (line tables) is all a report's stack needs, at a quarter less
 #   compile time than -g (docs/design/sanitizers_and_fuzzing.md).
 function(linesurf_enable_sanitizers sanitizers)
   if(sanitizers STREQUAL "")
@@ -18,17 +19,6 @@ function(linesurf_enable_sanitizers sanitizers)
   endif()
   add_compile_options(${flags})
   add_link_options(-fsanitize=${sanitizers})
-endfunction()
-
-# linesurf_sanitized_host(<target>)
-#   In a sanitized build, compiles a test or tool executable at -O0: the run time of the suite is
-#   spent in the modules it calls (kept at -O1), while -O0 compiles a unit in about 0.56 of its
-#   -O1 time (measured on one unit, docs/design/sanitizers_and_fuzzing.md). No effect in other
-#   builds.
-function(linesurf_sanitized_host target)
-  if(NOT LINESURF_SANITIZE STREQUAL "" AND NOT LINESURF_FUZZ)
-    target_compile_options(${target} PRIVATE -O0)
-  endif()
 endfunction()
 
 # linesurf_add_module(NAME <target> SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
@@ -62,7 +52,6 @@ function(linesurf_add_test)
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE ${ARG_DEPS} linesurf_testing GTest::gtest GTest::gmock)
   linesurf_set_warnings(${target})
-  linesurf_sanitized_host(${target})
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
