@@ -3,7 +3,8 @@
 # the prefix's site-packages, run outside the build tree) and checks that its mesh of the
 # bundled house is byte for byte the CLI's.
 # Run by CTest (tools/python/tests/CMakeLists.txt) with -DBUILD_DIR= -DSOURCE_DIR= -DCLI=
-# -DWORK= -DPYTHON= -DSITE_DIR= (relative to the prefix).
+# -DWORK= -DPYTHON= -DSITE_DIR= (relative to the prefix) -DPRELOAD= (a sanitized build: the
+# sanitizer runtime python needs, preloaded into python only; may be empty).
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
@@ -29,12 +30,17 @@ set(house ${SOURCE_DIR}/docs/examples/house/lines.json)
 run(${CLI} reconstruct ${house} --scene exterior -o ${WORK}/cli.ply)
 
 set(ENV{PYTHONPATH} ${site})
-run(${PYTHON} -c "print(__import__('linesurf._linesurf', fromlist=['_']).__file__)")
+set(python ${PYTHON})
+if(NOT PRELOAD STREQUAL "")
+  set(python ${CMAKE_COMMAND} -E env LD_PRELOAD=${PRELOAD}
+    ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:strict_string_checks=1 ${PYTHON})
+endif()
+run(${python} -c "print(__import__('linesurf._linesurf', fromlist=['_']).__file__)")
 string(STRIP "${run_output}" loaded)
 if(NOT loaded STREQUAL extension)
   message(FATAL_ERROR "python loaded ${loaded}, not the installed ${extension}")
 endif()
-run(${PYTHON} ${SOURCE_DIR}/docs/examples/host_python/reconstruct_house.py ${house}
+run(${python} ${SOURCE_DIR}/docs/examples/host_python/reconstruct_house.py ${house}
   ${WORK}/python.ply)
 message(STATUS "${run_output}")
 execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/cli.ply ${WORK}/python.ply
