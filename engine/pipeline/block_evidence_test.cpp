@@ -195,13 +195,13 @@ TEST(ComputeBlockEvidence, OneBlockIsComputeEvidenceTermForTerm) {
 }
 
 TEST(ComputeBlockEvidence, SameEnergyForAnyThreadCount) {
-  const testing::RealThreadCounts real;
+  const linesurf::testing::RealThreadCounts real;
   const Scene scene = RandomScene(5, 8);
   const partition::BlockComplexes blocks = Blocks(scene, 1.1, false);
   ASSERT_GT(blocks.blocks.size(), 8u);
   const EvidenceResult one = BlockEnergy(blocks, scene, 1);
   EXPECT_GT(one.energy.NumParityGroups(), 0u);
-  for (const int threads : testing::kThreadCounts) {
+  for (const int threads : linesurf::testing::kThreadCounts) {
     SCOPED_TRACE(threads);
     ExpectSameEnergy(BlockEnergy(blocks, scene, threads).energy, one.energy);
   }

@@ -15,10 +15,8 @@ namespace linesurf::pipeline {
 namespace {
 
 constexpr const char* kComputeEvidenceStage = "evidence";
-/// Fixed-point scale of the accumulated weights (segment_evidence.cpp): 2^-32 resolution.
-constexpr double kFixedPointScale = 4294967296.0;
 /// Largest fixed-point total: every accumulated cost must stay below it, or the sums wrap.
-constexpr double kFixedPointLimit = 9.2233720368547758e18 / kFixedPointScale;  // 2^63 / scale
+constexpr double kFixedPointLimit = 9.2233720368547758e18 / kEvidenceFixedPointScale;  // 2^63 / scale
 /// Largest weight accepted (defaults are 0.01 to 1; beyond this the LP loses all precision).
 constexpr double kMaxWeight = 1e6;
 /// Smallest sigma, as a fraction of the box diagonal: finer scales resolve nothing and make the

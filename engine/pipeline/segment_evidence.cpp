@@ -18,8 +18,6 @@ namespace linesurf::pipeline {
 namespace {
 
 constexpr const char* kSegmentEvidenceStage = "evidence";
-/// Fixed-point scale of the accumulated weights: 2^-32 resolution, totals up to 2^31.
-constexpr double kFixedPointScale = 4294967296.0;
 /// Segments per parallel work item (fixed, so chunking never depends on the thread count).
 constexpr std::size_t kSegmentChunk = 32;
 /// Sample points are moved off their plane(s) by this fraction of the box diagonal before
@@ -32,8 +30,8 @@ constexpr double kGrazingSine = 1e-6;
 /// Segments shorter than this fraction of sigma after projection carry no primitive evidence.
 constexpr double kMinProjectedLengthRelative = 1e-9;
 
-std::int64_t ToFixed(double w) { return std::llround(w * kFixedPointScale); }
-double FromFixed(std::int64_t w) { return static_cast<double>(w) / kFixedPointScale; }
+std::int64_t ToFixed(double w) { return std::llround(w * kEvidenceFixedPointScale); }
+double FromFixed(std::int64_t w) { return static_cast<double>(w) / kEvidenceFixedPointScale; }
 
 void AtomicAdd(std::vector<std::int64_t>& v, std::size_t i, std::int64_t w) {
   std::atomic_ref<std::int64_t>(v[i]).fetch_add(w, std::memory_order_relaxed);

@@ -22,6 +22,10 @@
 
 namespace linesurf::pipeline {
 
+/// Fixed-point scale of the accumulated evidence weights: 2^-32 resolution, totals up to 2^31.
+/// Integer sums make the totals independent of the order the threads add them in.
+inline constexpr double kEvidenceFixedPointScale = 4294967296.0;
+
 /// The cells and facets sight rays are walked through, with ids global to the space. Methods
 /// are const and thread-safe.
 class EvidenceSpace {

@@ -2,8 +2,9 @@
 # out-of-tree hosts docs/examples/host_cpp and host_c against it with find_package(linesurf 1),
 # runs them on the bundled house and checks their meshes are byte for byte the CLI's.
 # Run by CTest (tests/integration/CMakeLists.txt) with -DBUILD_DIR= -DSOURCE_DIR= -DCLI= -DWORK=
-# -DCXX= -DCC= -DPKG_CONFIG= (may be empty) -DSANITIZE= (LINESURF_SANITIZE, may be empty: a
-# sanitized library needs hosts linked with the same sanitizer runtime).
+# -DCXX= -DCC= -DCC_ID= (CMAKE_C_COMPILER_ID) -DPKG_CONFIG= (may be empty) -DSANITIZE=
+# (LINESURF_SANITIZE, may be empty: a sanitized library needs hosts linked with the same
+# sanitizer runtime).
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -16,9 +17,9 @@ endfunction()
 set(prefix ${WORK}/prefix)
 set(host_flags "")
 set(c_host_link_flags "")
-if(NOT SANITIZE STREQUAL "")
+if(DEFINED SANITIZE AND NOT SANITIZE STREQUAL "")
   set(host_flags "-fsanitize=${SANITIZE}")
-  if(CC MATCHES "clang")
+  if(CC_ID STREQUAL "Clang")
     # clang links a C program with the C part of the UBSan runtime only; the library's C++ code
     # needs the rest (__ubsan_vptr_type_cache, the dynamic-type handlers) and its libstdc++.
     set(c_host_link_flags "-fsanitize-link-c++-runtime -lstdc++")
@@ -49,11 +50,14 @@ set(house ${SOURCE_DIR}/docs/examples/house/lines.json)
 run(${CLI} --quiet reconstruct ${house} --scene exterior -o ${WORK}/cli.ply)
 
 foreach(host host_cpp host_c)
+  set(link_flags "")
+  if(host STREQUAL "host_c" AND NOT c_host_link_flags STREQUAL "")
+    set(link_flags "-DCMAKE_EXE_LINKER_FLAGS=${c_host_link_flags}")
+  endif()
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/docs/examples/${host} -B ${WORK}/${host}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix}
     -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_C_COMPILER=${CC}
-    -DCMAKE_CXX_FLAGS=${host_flags} -DCMAKE_C_FLAGS=${host_flags}
-    "-DCMAKE_EXE_LINKER_FLAGS=${c_host_link_flags}")
+    -DCMAKE_CXX_FLAGS=${host_flags} -DCMAKE_C_FLAGS=${host_flags} ${link_flags})
   run(${CMAKE_COMMAND} --build ${WORK}/${host})
   run(${WORK}/${host}/${host} ${house} ${WORK}/${host}.ply)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/cli.ply ${WORK}/${host}.ply

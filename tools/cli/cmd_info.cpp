@@ -3,12 +3,12 @@
 #include "linesurf/linesurf.h"
 
 #include "tools/cli/commands.h"
+#include "tools/cli/number_text.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -28,14 +28,8 @@ struct InfoArgs {
   bool json = false;
 };
 
-std::string Num(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", v);
-  return buffer;
-}
-
 std::string VecText(const Vector3& v) {
-  return "[" + Num(v[0]) + ", " + Num(v[1]) + ", " + Num(v[2]) + "]";
+  return "[" + ShortNumber(v[0]) + ", " + ShortNumber(v[1]) + ", " + ShortNumber(v[2]) + "]";
 }
 
 nlohmann::json VecJson(const Vector3& v) { return nlohmann::json::array({v[0], v[1], v[2]}); }
@@ -175,8 +169,8 @@ void PrintText(const nlohmann::json& info, const std::string& input) {
     };
     const Vector3 e = vec(b["extent"]);
     std::cout << VecText(vec(b["min"])) << " .. " << VecText(vec(b["max"])) << ", extent "
-              << Num(e[0]) << " x " << Num(e[1]) << " x " << Num(e[2]) << ", diagonal "
-              << Num(b["diagonal"].get<double>()) << "\n";
+              << ShortNumber(e[0]) << " x " << ShortNumber(e[1]) << " x " << ShortNumber(e[2]) << ", diagonal "
+              << ShortNumber(b["diagonal"].get<double>()) << "\n";
   }
   std::cout << "views per segment:";
   for (const auto& bin : info["views_per_segment"]) {
@@ -185,14 +179,14 @@ void PrintText(const nlohmann::json& info, const std::string& input) {
   std::cout << "\n";
   if (info.contains("segment_length")) {
     const auto& l = info["segment_length"];
-    std::cout << "segment length: min " << Num(l["min"].get<double>()) << ", p05 "
-              << Num(l["p05"].get<double>()) << ", p25 " << Num(l["p25"].get<double>())
-              << ", median " << Num(l["median"].get<double>()) << ", p75 "
-              << Num(l["p75"].get<double>()) << ", p95 " << Num(l["p95"].get<double>())
-              << ", max " << Num(l["max"].get<double>()) << "\n";
+    std::cout << "segment length: min " << ShortNumber(l["min"].get<double>()) << ", p05 "
+              << ShortNumber(l["p05"].get<double>()) << ", p25 " << ShortNumber(l["p25"].get<double>())
+              << ", median " << ShortNumber(l["median"].get<double>()) << ", p75 "
+              << ShortNumber(l["p75"].get<double>()) << ", p95 " << ShortNumber(l["p95"].get<double>())
+              << ", max " << ShortNumber(l["max"].get<double>()) << "\n";
     std::cout << "segment length histogram:\n";
     for (const auto& bin : info["segment_length_histogram"]) {
-      std::cout << "  [" << Num(bin["from"].get<double>()) << ", " << Num(bin["to"].get<double>())
+      std::cout << "  [" << ShortNumber(bin["from"].get<double>()) << ", " << ShortNumber(bin["to"].get<double>())
                 << "): " << bin["segments"].get<std::size_t>() << "\n";
     }
   }

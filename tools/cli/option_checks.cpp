@@ -1,18 +1,13 @@
 #include "tools/cli/option_checks.h"
 
+#include "tools/cli/number_text.h"
+
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <string>
 
 namespace linesurf::cli {
 namespace {
-
-std::string Num(double v) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.6g", v);
-  return text;
-}
 
 /// A validator that parses the value as a double and accepts it when `ok` holds.
 CLI::Validator NumberCheck(const std::function<bool(double)>& ok, const std::string& what) {
@@ -29,16 +24,16 @@ CLI::Validator NumberCheck(const std::function<bool(double)>& ok, const std::str
 }  // namespace
 
 CLI::Validator AtLeast(double lo) {
-  return NumberCheck([lo](double v) { return v >= lo; }, ">= " + Num(lo));
+  return NumberCheck([lo](double v) { return v >= lo; }, ">= " + ShortNumber(lo));
 }
 
 CLI::Validator Above(double lo) {
-  return NumberCheck([lo](double v) { return v > lo; }, "> " + Num(lo));
+  return NumberCheck([lo](double v) { return v > lo; }, "> " + ShortNumber(lo));
 }
 
 CLI::Validator Between(double lo, double hi) {
   return NumberCheck([lo, hi](double v) { return v >= lo && v <= hi; },
-                     "in [" + Num(lo) + ", " + Num(hi) + "]");
+                     "in [" + ShortNumber(lo) + ", " + ShortNumber(hi) + "]");
 }
 
 void AddTypeChecks(CLI::App& root) {

@@ -2,9 +2,9 @@
 #   Instruments everything built after this call (our code and the tests; Debian's prebuilt
 #   libraries stay uninstrumented) with the given sanitizers, e.g. "address,undefined". UBSan
 #   findings abort the test (-fno-sanitize-recover) so that CTest sees them; -O1 keeps the suite
-#   fast enough for CI, for the tests too (the linker keeps one copy of an inline function, so -O0
-#   tests would hand the modules unoptimised Eigen); -g1 (line tables) is all a report's stack needs, at a quarter less
-#   compile time than -g (docs/design/sanitizers_and_fuzzing.md).
+#   fast enough for CI, for the tests too (the linker keeps one copy of an inline function, so
+#   -O0 tests would hand the modules unoptimised Eigen); -g1 (line tables) is all a report's
+#   stack needs, at a quarter less compile time than -g (docs/design/sanitizers_and_fuzzing.md).
 function(linesurf_enable_sanitizers sanitizers)
   if(sanitizers STREQUAL "")
     return()
@@ -13,10 +13,11 @@ function(linesurf_enable_sanitizers sanitizers)
   if(sanitizers MATCHES "undefined")
     list(APPEND flags -fno-sanitize-recover=undefined)
   endif()
-  if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
-    # Third-party header code that reports on every run (each entry says why it is harmless).
-    list(APPEND flags -fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/tools/cmake/sanitizer_ignorelist.txt)
-  endif()
+  # Third-party header code that reports on every run (each entry says why it is harmless);
+  # clang only (g++ has no ignore list).
+  set(ignorelist ${PROJECT_SOURCE_DIR}/tools/cmake/sanitizer_ignorelist.txt)
+  set(clang "$<OR:$<COMPILE_LANG_AND_ID:CXX,Clang>,$<COMPILE_LANG_AND_ID:C,Clang>>")
+  list(APPEND flags "$<${clang}:-fsanitize-ignorelist=${ignorelist}>")
   add_compile_options(${flags})
   add_link_options(-fsanitize=${sanitizers})
 endfunction()

@@ -10,7 +10,7 @@
 namespace linesurf::synth {
 namespace {
 
-constexpr double kWall = 0.3;
+constexpr double kFloorWall = 0.3;
 constexpr double kInner = 0.15;
 constexpr double kX = 10.0;
 constexpr double kY = 8.0;
@@ -26,7 +26,7 @@ FamilyLayout FloorLayout(const SynthSpec& /*spec*/) {
   layout.interior = true;
   const double xe = kSplitX + kInner;  // east rooms start here
   const double yn = kSplitY + kInner;  // north room starts here
-  const AxisBox outer{{-kWall, -kWall, -kWall}, {kX + kWall, kY + kWall, kZ + kWall}};
+  const AxisBox outer{{-kFloorWall, -kFloorWall, -kFloorWall}, {kX + kFloorWall, kY + kFloorWall, kZ + kFloorWall}};
   const std::vector<AxisBox> cavities = {
       {{0, 0, 0}, {kSplitX, kY, kZ}},               // A
       {{xe, 0, 0}, {kX, kSplitY, kZ}},              // B

@@ -13,7 +13,7 @@
 namespace linesurf::synth {
 namespace {
 
-constexpr double kWall = 0.3;
+constexpr double kRoomWall = 0.3;
 constexpr double kRoomX = 6.0;
 constexpr double kRoomY = 5.0;
 constexpr double kRoomZ = 2.8;
@@ -23,7 +23,7 @@ constexpr double kRoomZ = 2.8;
 FamilyLayout RoomLayout(const SynthSpec& /*spec*/) {
   FamilyLayout layout;
   layout.interior = true;
-  const AxisBox outer{{-kWall, -kWall, -kWall}, {kRoomX + kWall, kRoomY + kWall, kRoomZ + kWall}};
+  const AxisBox outer{{-kRoomWall, -kRoomWall, -kRoomWall}, {kRoomX + kRoomWall, kRoomY + kRoomWall, kRoomZ + kRoomWall}};
   const AxisBox room{{0, 0, 0}, {kRoomX, kRoomY, kRoomZ}};
   const std::vector<AxisBox> cavities = {
       room,

@@ -31,7 +31,7 @@ run(${CLI} reconstruct ${house} --scene exterior -o ${WORK}/cli.ply)
 
 set(ENV{PYTHONPATH} ${site})
 set(python ${PYTHON})
-if(NOT PRELOAD STREQUAL "")
+if(DEFINED PRELOAD AND NOT PRELOAD STREQUAL "")
   set(python ${CMAKE_COMMAND} -E env LD_PRELOAD=${PRELOAD}
     ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:strict_string_checks=1 ${PYTHON})
 endif()
