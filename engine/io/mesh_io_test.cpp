@@ -117,6 +117,20 @@ TEST(MeshIo, ReadsForeignPlyTypesAndBigEndian) {
   EXPECT_EQ(b->Face(0)[2], 2u);
 }
 
+// Fuzz reproducer tests/robustness/fuzz/reproducers/mesh_ply/ (a timeout): an element without
+// properties holds no data whatever its count, so it is skipped, not walked item by item.
+TEST(MeshIo, PlyElementWithoutPropertiesAndAHugeCountIsSkipped) {
+  const auto dir = testing::FreshTempDir();
+  std::ofstream(dir / "a.ply", std::ios::binary)
+      << "ply\nformat ascii 1.0\nelement empty 9000000000000000000\nelement vertex 3\n"
+         "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+         "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto a = ReadMesh(dir / "a.ply");
+  ASSERT_TRUE(a) << a.error().ToString();
+  EXPECT_EQ(a->vertices.size(), 3u);
+  EXPECT_EQ(a->NumFaces(), 1u);
+}
+
 TEST(MeshIo, ReadsObjSlashFormsAndNegativeIndices) {
   const auto dir = testing::FreshTempDir();
   std::ofstream(dir / "m.obj") << "# c\nmtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\n"

@@ -359,6 +359,9 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
                       kInvalidInput,
                       kMeshReadStage,
                       file << ": element face lacks a vertex_indices list");
+    // An element without properties has no bytes to read: its count, up to 2^63, would only
+    // spin (found by fuzzing: `element vertey 99999990`).
+    if (element.properties.empty()) continue;
     for (std::size_t i = 0; i < element.count; ++i) {
       const std::string where = element.name + " " + std::to_string(i);
       values.BeginItem(file, where);
