@@ -202,7 +202,8 @@ TEST(FacadeOptions, NamesRoundTrip) {
                           SolverBackend::kBand,
                           SolverBackend::kCbc,
                           SolverBackend::kClpBarrier,
-                          SolverBackend::kBlocks}) {
+                          SolverBackend::kBlocks,
+                          SolverBackend::kPdhgEnergy}) {
     EXPECT_EQ(SolverBackendFromName(SolverBackendName(b)), b);
   }
   for (SceneMode m : {SceneMode::kExterior, SceneMode::kInterior, SceneMode::kAuto}) {

@@ -15,6 +15,7 @@
 #include "solver/lp/backends/clp/clp_backend.h"
 #include "solver/lp/backends/maxflow/maxflow_backend.h"
 #include "solver/lp/backends/pdhg/pdhg_backend.h"
+#include "solver/lp/backends/pdhg_energy/pdhg_energy_backend.h"
 #include "solver/lp/round_labels.h"
 #include "solver/lp/window_polish.h"
 
@@ -58,6 +59,9 @@ void SetLowerBound(LabelingResult& result, const LpModel& lp, const LpSolution& 
   } else if (result.backend == "maxflow") {
     result.lower_bound = result.labels_objective;
     result.lower_bound_source = "integer optimum";
+  } else if (result.backend == "pdhg-energy") {
+    result.lower_bound = std::min(solution.lower_bound, result.labels_objective);
+    result.lower_bound_source = "energy dual bound";
   } else if (result.backend == "pdhg" && !solution.row_duals.empty()) {
     // pdhg's relaxed objective is a primal value; its dual point proves a bound.
     result.lower_bound = std::min(LagrangianBound(lp, solution.row_duals), result.labels_objective);
@@ -150,10 +154,12 @@ LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> b
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return blocks;
   }
-  const LpModel lp = BuildLpModel(reduced);
+  const LpModel lp = result.backend == "pdhg-energy" ? LpModel{} : BuildLpModel(reduced);
 
   LpSolution solution;
-  if (result.backend == "clp") {
+  if (result.backend == "pdhg-energy") {
+    solution = SolveEnergyWithPdhg(reduced, options, ctx);
+  } else if (result.backend == "clp") {
     solution = SolveLpWithClp(lp, ClpAlgorithm::kDualSimplex, options, ctx);
   } else if (result.backend == "clp-barrier") {
     solution = SolveLpWithClp(lp, ClpAlgorithm::kBarrier, options, ctx);
@@ -207,9 +213,11 @@ LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> b
 
 Status LabelingOptions::Validate() const {
   if (backend != "auto" && backend != "clp" && backend != "clp-barrier" && backend != "maxflow" &&
-      backend != "pdhg" && backend != "band" && backend != "blocks" && backend != "cbc") {
+      backend != "pdhg" && backend != "pdhg-energy" && backend != "band" && backend != "blocks" &&
+      backend != "cbc") {
     return InvalidOption("backend: '" + backend +
-                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, band, blocks, cbc");
+                         "' is not one of auto, clp, clp-barrier, maxflow, pdhg, pdhg-energy, "
+                         "band, blocks, cbc");
   }
   if (block_backend != "auto" && block_backend != "clp" && block_backend != "pdhg" &&
       block_backend != "cbc") {

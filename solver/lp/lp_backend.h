@@ -12,6 +12,10 @@
 ///               restarts to the average, adaptive primal weight); SpMV in fixed chunks with oneTBB
 ///               so the result is identical for any thread count. Approximate optimum (relative
 ///               tolerance pdhg_tolerance), fast on large complexes.
+///  - "pdhg-energy": the same relaxation solved by first-order primal-dual steps on the energy's
+///               saddle-point form (pdhg_energy_backend.h): one variable per free cell and one
+///               bounded multiplier per term, no slack columns; every multiplier point proves a
+///               lower bound. Identical for any thread count.
 ///  - "band":    for large complexes (band_fixing.h): exact max-flow of the unary and pairwise
 ///               terms, then the LP ("auto" among clp/pdhg) of the cells near that surface only,
 ///               every other cell fixed at its max-flow label. A heuristic: not the full LP's
@@ -59,13 +63,14 @@ inline constexpr double kTieTolerance = 1e-7;
 
 struct LabelingOptions {
   /// "auto" (default: picks per model size, see above), "clp", "clp-barrier", "maxflow",
-  /// "pdhg", "band", "blocks" or "cbc".
+  /// "pdhg", "pdhg-energy", "band", "blocks" or "cbc".
   std::string backend = "auto";
   /// Primal/dual feasibility tolerance of the simplex (Clp's primal and dual tolerances); range
   /// (0, 1e-2]. Clp's default.
   double clp_tolerance = 1e-7;
-  /// Relative tolerance of pdhg on primal residual, dual residual and duality gap; range
-  /// (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our tests (docs/solver.md).
+  /// Relative tolerance of pdhg on primal residual, dual residual and duality gap, and of
+  /// pdhg-energy on its duality gap; range (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our
+  /// tests (docs/solver.md).
   double pdhg_tolerance = 1e-4;
   /// Iteration cap of pdhg; >= 1. Reaching it is a failure (kSolverFailed).
   std::int64_t pdhg_max_iterations = 200000;
@@ -148,7 +153,8 @@ struct LabelingResult {
   /// lower_bound bounds how far the labels are from optimal); -infinity when none is known.
   double lower_bound = -std::numeric_limits<double>::infinity();
   /// Where lower_bound comes from: "block split: ..." (blocks: the sum of the blocks'
-  /// interior bounds, with how each was proven), "lp optimum" (clp), "lp dual bound" (pdhg: the Lagrangian
+  /// interior bounds, with how each was proven), "lp optimum" (clp), "energy dual bound" (pdhg-energy: its best multiplier point),
+  /// "lp dual bound" (pdhg: the Lagrangian
   /// bound of its dual point, dual_bound.h; its relaxed_objective is a primal value, not a
   /// bound), "integer optimum" (cbc proved it, maxflow, or one exact window held every free
   /// cell), "branch and bound" (cbc stopped early), "pairwise optimum" (band: the max-flow

@@ -67,7 +67,9 @@ TEST_P(EveryBackend, FixedCellsAreRespected) {
   EXPECT_NEAR(r.labels_objective, testing::BruteForceMinimum(e), kExactObjectiveTolerance);
 }
 
-INSTANTIATE_TEST_SUITE_P(Solver, EveryBackend, ::testing::Values("clp", "maxflow", "pdhg", "auto"));
+INSTANTIATE_TEST_SUITE_P(Solver,
+                         EveryBackend,
+                         ::testing::Values("clp", "maxflow", "pdhg", "pdhg-energy", "auto"));
 
 class LpBackends : public ::testing::TestWithParam<std::string> {};
 
@@ -134,7 +136,7 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
   EXPECT_GT(integral, 5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Solver, LpBackends, ::testing::Values("clp", "pdhg"));
+INSTANTIATE_TEST_SUITE_P(Solver, LpBackends, ::testing::Values("clp", "pdhg", "pdhg-energy"));
 
 TEST(SolveLabeling, MaxflowMatchesClpOnPairwiseEnergies) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
@@ -238,29 +240,37 @@ TEST(SolveLabeling, EmptyEnergySolves) {
 namespace linesurf::solver {
 namespace {
 
-TEST(SolveLabeling, PdhgIsIdenticalForAnyThreadCount) {
+TEST(SolveLabeling, FirstOrderBackendsAreIdenticalForAnyThreadCount) {
   testing::GridEnergySpec spec;
-  spec.nx = spec.ny = spec.nz = 14;  // LP of ~16k columns: several parallel chunks
+  spec.nx = spec.ny = spec.nz = 14;  // LP of ~16k columns, 2.7k cells: several parallel chunks
   const EnergyInput e = testing::GridEnergy(spec);
   const linesurf::testing::RealThreadCounts real_threads;
-  const LabelingResult one = MustSolve(e, "pdhg", 1);
-  ASSERT_GT(one.lp_columns, 10000u);
-  for (int threads : linesurf::testing::kThreadCounts) {
-    const LabelingResult many = MustSolve(e, "pdhg", threads);
-    EXPECT_EQ(many.labels, one.labels) << threads;
-    EXPECT_EQ(many.relaxed, one.relaxed) << threads;  // bitwise
-    EXPECT_EQ(many.iterations, one.iterations) << threads;
+  for (const char* backend : {"pdhg", "pdhg-energy"}) {
+    const LabelingResult one = MustSolve(e, backend, 1);
+    ASSERT_GT(one.lp_columns, 10000u);
+    for (int threads : linesurf::testing::kThreadCounts) {
+      const LabelingResult many = MustSolve(e, backend, threads);
+      EXPECT_EQ(many.labels, one.labels) << backend << " " << threads;
+      EXPECT_EQ(many.relaxed, one.relaxed) << backend << " " << threads;  // bitwise
+      EXPECT_EQ(many.iterations, one.iterations) << backend << " " << threads;
+    }
   }
 }
 
-TEST(SolveLabeling, PdhgIsCloseToClpOnAGridEnergy) {
+TEST(SolveLabeling, FirstOrderBackendsAreCloseToClpOnAGridEnergy) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 10;
   const EnergyInput e = testing::GridEnergy(spec);
   const LabelingResult clp = MustSolve(e, "clp");
-  const LabelingResult pdhg = MustSolve(e, "pdhg");
-  EXPECT_NEAR(pdhg.relaxed_objective, clp.relaxed_objective, kPdhgAgreement * clp.relaxed_objective);
-  EXPECT_GE(pdhg.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
+  for (const char* backend : {"pdhg", "pdhg-energy"}) {
+    const LabelingResult first_order = MustSolve(e, backend);
+    EXPECT_NEAR(first_order.relaxed_objective,
+                clp.relaxed_objective,
+                kPdhgAgreement * clp.relaxed_objective)
+        << backend;
+    EXPECT_GE(first_order.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance)
+        << backend;
+  }
 }
 
 TEST(SolveLabeling, BandIsAnUpperBoundOfTheFullLpAndKeepsFixes) {
@@ -453,6 +463,28 @@ TEST(SolveLabeling, PdhgDualBoundIsAValidAndCloseLowerBound) {
     EXPECT_EQ(pdhg_only.lower_bound_source, "lp dual bound");
     EXPECT_LE(pdhg_only.lower_bound,
               MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
+        << seed;
+  }
+}
+
+// Every multiplier point of pdhg-energy proves a bound: below Clp's LP optimum, and within the
+// tolerance of it at the end.
+TEST(SolveLabeling, PdhgEnergyDualBoundIsAValidAndCloseLowerBound) {
+  testing::GridEnergySpec spec;
+  spec.nx = spec.ny = spec.nz = 10;
+  const EnergyInput e = testing::GridEnergy(spec);
+  const LabelingResult clp = MustSolve(e, "clp");
+  const LabelingResult energy_pdhg = MustSolve(e, "pdhg-energy");
+  EXPECT_EQ(energy_pdhg.lower_bound_source, "energy dual bound");
+  EXPECT_LE(energy_pdhg.lower_bound, clp.relaxed_objective + kObjectiveTolerance);
+  EXPECT_GE(energy_pdhg.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement));
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    testing::RandomEnergySpec random;
+    random.seed = seed;
+    const EnergyInput r = testing::RandomEnergy(random);
+    const LabelingResult only = SolveWith(r, RoundingAndLocalSearch("pdhg-energy"));
+    EXPECT_EQ(only.lower_bound_source, "energy dual bound");
+    EXPECT_LE(only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
         << seed;
   }
 }

@@ -11,11 +11,18 @@
 //       on the monolithic complex, its cells cut into k-d blocks of at most each of MAX_CELLS
 //       cells (pipeline::CentroidBlocks); then the global solve with `global` (auto, pdhg,
 //       none).
+//   linesurf_block_labelling_study engine PATH given|detected BLOCK_SIZE MARGIN THREADS
+//                                  [VARIANT;VARIANT...]
+//       the energy of `reconstruct --engine blocks` (block size, 0 = automatic, and support
+//       margin given; every other option at its default), solved once per variant
+//       BACKEND[:KEY=VALUE,...] with the engine's blocks as the partition
+//       (docs/design/lp_backend.md, "Energy pdhg").
 // `inner` is LabelingOptions::block_backend; KEY=VALUE sets other LabelingOptions fields:
 // window_cells, block_halo, local_search_passes, group_move_passes, pdhg_tolerance,
-// auto_clp_max_columns, block_bound_passes.
+// auto_clp_max_columns, block_bound_passes, block_sweeps, auto_blocks_min_columns.
 
 #include "engine/io/read_scene.h"
+#include "engine/pipeline/block_evidence.h"
 #include "engine/pipeline/centroid_blocks.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
@@ -188,6 +195,10 @@ bool SetOptions(const std::string& list, solver::LabelingOptions& options) {
       options.auto_clp_max_columns = static_cast<std::size_t>(value);
     } else if (key == "block_bound_passes") {
       options.block_bound_passes = static_cast<int>(value);
+    } else if (key == "block_sweeps") {
+      options.block_sweeps = static_cast<int>(value);
+    } else if (key == "auto_blocks_min_columns") {
+      options.auto_blocks_min_columns = static_cast<std::size_t>(value);
     } else {
       return false;
     }
@@ -288,6 +299,78 @@ int SceneStudy(const char* path,
   return 0;
 }
 
+// The energy `reconstruct --engine blocks` builds (given or detected planes, default options but
+// the block size and margin), solved once per variant "BACKEND[:KEY=VALUE,...]" of `variants`
+// (';'-separated), with the engine's blocks as the partition.
+int EngineStudy(const char* path,
+                const std::string& planes,
+                double block_size,
+                int margin,
+                int threads,
+                const std::string& variants) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scene input = Take(io::ReadScene(path, {}));
+  pipeline::ReconstructOptions o;
+  o.engine = pipeline::Engine::kBlocks;
+  o.blocks.block_size = block_size;
+  o.blocks.support.margin_blocks = margin;
+  o.use_given_planes = planes == "given";
+  o.num_threads = threads;
+  RunContext ctx;
+  ctx.num_threads = threads;
+  const pipeline::PreparedReconstruction prepared =
+      Take(pipeline::PrepareReconstruction(input, o, ctx));
+  const double prepare_seconds = Seconds(start);
+  const auto evidence_start = std::chrono::steady_clock::now();
+  const pipeline::EvidenceResult evidence = Take(pipeline::ComputeBlockEvidence(
+      prepared.blocks->complexes,
+      prepared.scene,
+      o.energy,
+      prepared.facts.interior ? pipeline::BoundaryMode::kInterior
+                              : pipeline::BoundaryMode::kExterior,
+      ctx));
+  const double evidence_seconds = Seconds(evidence_start);
+  const std::vector<std::size_t> offsets =
+      partition::GlobalCellOffsets(prepared.blocks->complexes);
+  std::vector<std::uint32_t> blocks(offsets.back());
+  for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
+    for (std::size_t c = offsets[b]; c < offsets[b + 1]; ++c) {
+      blocks[c] = static_cast<std::uint32_t>(b);
+    }
+  }
+  const std::string name = "engine " + planes;
+  std::printf(
+      "%s: %zu planes, block size %.3f, margin %d, %zu blocks, %zu cells, %zu pairs, %zu "
+      "structural, %zu parity; prepare %.1f s, evidence %.1f s, threads %d\n\n",
+      name.c_str(),
+      prepared.scene.planes.size(),
+      prepared.stats.block_size,
+      margin,
+      prepared.blocks->complexes.blocks.size(),
+      evidence.energy.NumCells(),
+      evidence.energy.NumPairs(),
+      evidence.energy.NumStructuralGroups(),
+      evidence.energy.NumParityGroups(),
+      prepare_seconds,
+      evidence_seconds,
+      threads);
+  std::fflush(stdout);
+  PrintHeader();
+  std::stringstream in(variants);
+  std::string variant;
+  while (std::getline(in, variant, ';')) {
+    solver::LabelingOptions options;
+    const std::size_t colon = variant.find(':');
+    options.backend = variant.substr(0, colon);
+    if (colon != std::string::npos && !SetOptions(variant.substr(colon + 1), options)) {
+      std::fprintf(stderr, "block_labelling_study: bad variant '%s'\n", variant.c_str());
+      return 2;
+    }
+    Print(Run(name, variant, evidence.energy, blocks, options, threads));
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace linesurf
 
@@ -306,6 +389,14 @@ int main(int argc, char** argv) {
                                 std::atoi(arg(7, "2")),
                                 arg(8, "auto"),
                                 arg(9, ""));
+  }
+  if (mode == "engine" && argc >= 7) {
+    return linesurf::EngineStudy(argv[2],
+                                 argv[3],
+                                 std::atof(argv[4]),
+                                 std::atoi(argv[5]),
+                                 std::atoi(argv[6]),
+                                 arg(7, "auto"));
   }
   std::fprintf(
       stderr,

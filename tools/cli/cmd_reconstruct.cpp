@@ -204,7 +204,8 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
                {"band", SolverBackend::kBand},
                {"cbc", SolverBackend::kCbc},
                {"clp-barrier", SolverBackend::kClpBarrier},
-               {"blocks", SolverBackend::kBlocks}},
+               {"blocks", SolverBackend::kBlocks},
+               {"pdhg-energy", SolverBackend::kPdhgEnergy}},
               "Labelling backend (auto: by model size)");
   r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
   r.AddChoice("engine",

@@ -111,7 +111,8 @@ void BindOptions(py::module_& m) {
                  &S::backend,
                  &SolverBackendName,
                  &SolverBackendFromName,
-                 "'auto', 'clp', 'maxflow', 'pdhg', 'band', 'cbc', 'clp-barrier' or 'blocks'")
+                 "'auto', 'clp', 'maxflow', 'pdhg', 'band', 'cbc', 'clp-barrier', 'blocks' or "
+                 "'pdhg-energy'")
       .Field("time_limit_seconds", &S::time_limit_seconds, "solve wall-time limit (0 = none)")
       .Finish();
 

@@ -104,8 +104,8 @@ LINESURF_API linesurf_status linesurf_options_set_number(linesurf_options* optio
                                                          double value,
                                                          linesurf_error** error);
 /* Sets an enumerated option by name: "planes" (detect, given), "scene_mode" (exterior,
- * interior, auto), "solver.backend" (auto, clp, maxflow, pdhg, band, cbc, clp-barrier, blocks),
- * "engine" (monolithic, blocks). */
+ * interior, auto), "solver.backend" (auto, clp, maxflow, pdhg, band, cbc, clp-barrier, blocks,
+ * pdhg-energy), "engine" (monolithic, blocks). */
 LINESURF_API linesurf_status linesurf_options_set_string(linesurf_options* options,
                                                          const char* name,
                                                          const char* value,

@@ -95,6 +95,7 @@ enum class SolverBackend {
   kCbc,         ///< COIN-OR Cbc on the integer program (small energies; optional at build time)
   kClpBarrier,  ///< Clp's barrier method (for measurements only: slow)
   kBlocks,      ///< per-block solve (blocks of cells, in parallel, with halos); large complexes
+  kPdhgEnergy,  ///< first-order primal-dual on the energy's saddle form: no slack columns
 };
 
 /// How the cell complex is built (docs/block_engine.md).
@@ -238,8 +239,8 @@ struct MeshWriteOptions {
   return "";
 }
 
-/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" / "blocks" ("" for a
-/// value outside the enum).
+/// "auto" / "clp" / "maxflow" / "pdhg" / "band" / "cbc" / "clp-barrier" / "blocks" /
+/// "pdhg-energy" ("" for a value outside the enum).
 [[nodiscard]] inline const char* SolverBackendName(SolverBackend backend) noexcept {
   switch (backend) {
     case SolverBackend::kAuto:
@@ -258,6 +259,8 @@ struct MeshWriteOptions {
       return "clp-barrier";
     case SolverBackend::kBlocks:
       return "blocks";
+    case SolverBackend::kPdhgEnergy:
+      return "pdhg-energy";
   }
   return "";
 }
@@ -298,7 +301,7 @@ std::optional<E> EnumFromName(std::string_view name,
 }
 [[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<SolverBackend>(name, 8, &SolverBackendName);
+  return internal::EnumFromName<SolverBackend>(name, 9, &SolverBackendName);
 }
 [[nodiscard]] inline std::optional<ComplexEngine> ComplexEngineFromName(
     std::string_view name) noexcept {

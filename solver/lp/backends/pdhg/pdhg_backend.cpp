@@ -5,61 +5,20 @@
 #include <cmath>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
+#include "solver/lp/backends/fixed_chunks.h"
+#include "solver/lp/backends/pdlp_restarts.h"
 
 namespace linesurf::solver {
 namespace {
 
 constexpr const char* kPdhgBackendStage = "solve_labeling";
-// Elements per parallel chunk: fixed, so every reduction has the same association for any
-// number of threads.
-constexpr std::size_t kChunk = 8192;
 // Ruiz equilibration passes before the Pock-Chambolle scaling.
 constexpr int kRuizPasses = 10;
 // Step size factor: after Pock-Chambolle scaling (alpha = 1) ||A|| <= 1 (Schur test), so any
 // eta < 1 is a valid PDHG step; 0.95 keeps a margin for rounding.
 constexpr double kStepSize = 0.95;
-// Iterations between restart / termination checks.
-constexpr std::int64_t kCheckPeriod = 64;
-// PDLP restart criteria on the KKT error (Applegate et al. 2021, section 3.2).
-constexpr double kRestartSufficient = 0.2;
-constexpr double kRestartNecessary = 0.8;
-constexpr double kRestartArtificial = 0.36;
-// Smoothing of the primal weight update at restarts.
-constexpr double kPrimalWeightSmoothing = 0.5;
-// Movement below which the primal weight is not updated.
-constexpr double kMinMovement = 1e-10;
-
-// Runs fn(begin, end) over fixed chunks of [0, n).
-template <typename Fn>
-void ForChunks(std::size_t n, const Fn& fn) {
-  if (n == 0) return;
-  const std::size_t num_chunks = (n + kChunk - 1) / kChunk;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, num_chunks, 1),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t c = r.begin(); c != r.end(); ++c) {
-          fn(c * kChunk, std::min(n, (c + 1) * kChunk));
-        }
-      },
-      tbb::simple_partitioner{});
-}
-
-// Sum of fn(begin, end) over fixed chunks, partials added serially in chunk order.
-template <typename Fn>
-double SumChunks(std::size_t n, const Fn& fn) {
-  const std::size_t num_chunks = (n + kChunk - 1) / kChunk;
-  std::vector<double> partial(num_chunks, 0.0);
-  ForChunks(n, [&](std::size_t begin, std::size_t end) { partial[begin / kChunk] = fn(begin, end); });
-  double sum = 0.0;
-  for (double p : partial) sum += p;
-  return sum;
-}
 
 struct SparseMatrix {
   std::size_t num_rows = 0;
@@ -240,7 +199,7 @@ KktErrors ComputeErrors(const LpModel& lp, const ScaledLp& s, const std::vector<
   // Columns: reduced cost rc = c - A^T y = c - aty~ / col_scale; x = x~ * col_scale.
   double col_res2 = 0.0, col_dual = 0.0, primal = 0.0;
   {
-    const std::size_t num_chunks = (n + kChunk - 1) / kChunk;
+    const std::size_t num_chunks = (n + kFixedChunk - 1) / kFixedChunk;
     std::vector<Partial> res(num_chunks), dual(num_chunks);
     ForChunks(n, [&](std::size_t b, std::size_t end) {
       Partial pr, du;
@@ -260,8 +219,8 @@ KktErrors ComputeErrors(const LpModel& lp, const ScaledLp& s, const std::vector<
         }
         pr.res2 += residual * residual;
       }
-      res[b / kChunk] = pr;
-      dual[b / kChunk] = du;
+      res[b / kFixedChunk] = pr;
+      dual[b / kFixedChunk] = du;
     });
     for (std::size_t c = 0; c < num_chunks; ++c) {
       col_res2 += res[c].res2;
@@ -282,13 +241,6 @@ double Merit(const KktErrors& e, double omega) {
                    e.dual_residual * e.dual_residual / (omega * omega) + e.Gap() * e.Gap());
 }
 
-double Distance(const std::vector<double>& a, const std::vector<double>& b) {
-  return std::sqrt(SumChunks(a.size(), [&](std::size_t lo, std::size_t hi) {
-    double s = 0.0;
-    for (std::size_t i = lo; i < hi; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-    return s;
-  }));
-}
 
 class Pdhg {
  public:
@@ -343,7 +295,7 @@ class Pdhg {
       // Cancellation is polled every iteration (one iteration of a large LP takes 50-150 ms).
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgBackendStage, "pdhg cancelled by the host");
-      if (it % kCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
+      if (it % kRestartCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -379,10 +331,7 @@ class Pdhg {
       const double candidate_merit = std::min(merit_current, merit_average);
       if (merit_at_restart < 0.0) merit_at_restart = candidate_merit;
       const bool restart =
-          candidate_merit <= kRestartSufficient * merit_at_restart ||
-          (candidate_merit <= kRestartNecessary * merit_at_restart &&
-           candidate_merit > last_candidate_merit) ||
-          static_cast<double>(since_restart) >= kRestartArtificial * static_cast<double>(it);
+          ShouldRestart(candidate_merit, merit_at_restart, last_candidate_merit, since_restart, it);
       last_candidate_merit = candidate_merit;
       if (!restart) continue;
       if (use_average) {
@@ -392,11 +341,7 @@ class Pdhg {
         aty.swap(aty_avg);
       }
       // Primal weight: balance the primal and dual movement since the last restart.
-      const double dx = Distance(x, x_restart), dy = Distance(y, y_restart);
-      if (dx > kMinMovement && dy > kMinMovement) {
-        omega = std::exp(kPrimalWeightSmoothing * std::log(dy / dx) +
-                         (1.0 - kPrimalWeightSmoothing) * std::log(omega));
-      }
+      omega = SmoothedPrimalWeight(omega, ChunkedDistance(x, x_restart), ChunkedDistance(y, y_restart));
       x_restart = x;
       y_restart = y;
       merit_at_restart = Merit(use_average ? average : current, omega);

@@ -1,0 +1,38 @@
+#pragma once
+/// @file pdhg_energy_backend.h
+/// @brief First-order primal-dual solve of the energy's relaxation in its saddle-point form
+/// (backend "pdhg-energy"), without the LP's slack columns.
+///
+/// Every term of the reduced energy is a maximum over a bounded multiplier:
+///   w |x_a - x_b|          = max_{y in [-w, w]} y (x_a - x_b)
+///   w max(0, 1 - sum x)    = max_{y in [0, w]}  y (1 - sum x)
+///   w |sum nu x + k|       = max_{y in [-w, w]} y (sum nu x + k)
+/// so the relaxation is min_{x in [0,1]^n} max_{y in Y} u.x + y.(K x + b) with one multiplier per
+/// term and K of +-1 entries. Chambolle-Pock iterations with the diagonal preconditioning of Pock
+/// & Chambolle (2011, alpha = 1: steps 1 / entries per column and per row), adaptive restarts to
+/// the average iterate and a primal weight, as PDLP does for LPs. Both sets are boxes, so every
+/// iterate is feasible: the primal value is the energy of x, and every y proves the lower bound
+///   D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j)
+/// of the relaxation (and so of the integral optimum). Stops when the best primal value and the
+/// best bound are within LabelingOptions::pdhg_tolerance (relative).
+///
+/// Against "pdhg" on the LP (build_lp.h), the same relaxation has one variable per free cell
+/// instead of one per cell and term, and one multiplier per term instead of two rows.
+/// Parallel over fixed chunks (fixed_chunks.h): the same result for any number of threads.
+
+#include "engine/core/run_context.h"
+#include "solver/energy/build_lp.h"
+#include "solver/lp/lp_backend.h"
+#include "solver/lp/lp_solution.h"
+
+namespace linesurf::solver {
+
+/// @return columns = the free cells' values (the best primal point found), objective = its
+/// energy, lower_bound = the best D(y), status "optimal (tolerance T)".
+/// Throws kSolverFailed at options.pdhg_max_iterations or options.time_limit_seconds, kCancelled
+/// when ctx.ShouldStop() (polled every iteration).
+[[nodiscard]] LpSolution SolveEnergyWithPdhg(const ReducedEnergy& energy,
+                                             const LabelingOptions& options,
+                                             const RunContext& ctx);
+
+}  // namespace linesurf::solver
