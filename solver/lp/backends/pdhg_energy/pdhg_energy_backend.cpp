@@ -117,21 +117,19 @@ class EnergyPdhg {
     for (std::size_t j = 0; j < n; ++j) {
       if (tau_[j] == 0.0) current.x[j] = energy_.unary[j] < 0.0 ? 1.0 : 0.0;
     }
-    Point sum{std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
-    Point next = current;
+    Point step = current;  // T(current): the PDHG step, a feasible point
+    Point anchor = current;
     std::vector<double> extrapolated(n, 0.0);
-    Point last_restart = current;
     double weight = 1.0;
     double restart_gap = -1.0;  // set at the first check
-    double previous_candidate_gap = std::numeric_limits<double>::infinity();
+    double previous_gap = std::numeric_limits<double>::infinity();
     std::int64_t since_restart = 0;
     best_primal_ = std::numeric_limits<double>::infinity();
     best_dual_ = -std::numeric_limits<double>::infinity();
     best_x_ = current.x;
 
     for (std::int64_t it = 1; it <= options_.pdhg_max_iterations; ++it) {
-      Step(current, weight, next, extrapolated, sum);
-      std::swap(current, next);
+      Iterate(current, anchor, since_restart, weight, step, extrapolated);
       ++since_restart;
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgEnergyStage, "pdhg-energy cancelled by the host");
@@ -144,31 +142,23 @@ class EnergyPdhg {
                         kPdhgEnergyStage,
                         "pdhg-energy stopped at the time limit of "
                             << options_.time_limit_seconds << " s after " << it << " iterations");
-      const Point average = Average(sum, since_restart);
-      const double current_gap = Gap(current);
-      const double average_gap = Gap(average);
+      // The merit is the duality gap at the step's point (feasible; both sets are bounded, so the
+      // gap is finite).
+      const double gap = Gap(step);
       if (Converged()) return Solution(it);
-
-      // Restart to the better of the current and the average point; the gap is the merit (both
-      // sets are bounded, so it is finite).
-      const bool take_average = average_gap < current_gap;
-      const double candidate_gap = take_average ? average_gap : current_gap;
-      if (restart_gap < 0.0) restart_gap = candidate_gap;
-      const bool restart =
-          ShouldRestart(candidate_gap, restart_gap, previous_candidate_gap, since_restart, it);
-      previous_candidate_gap = candidate_gap;
+      if (restart_gap < 0.0) restart_gap = gap;
+      const bool restart = ShouldRestart(gap, restart_gap, previous_gap, since_restart, it);
+      previous_gap = gap;
       if (!restart) continue;
-      if (take_average) current = average;
-      weight = SmoothedPrimalWeight(weight,
-                                    ChunkedDistance(current.x, last_restart.x),
-                                    ChunkedDistance(current.y, last_restart.y));
-      last_restart = current;
-      restart_gap = candidate_gap;
-      previous_candidate_gap = std::numeric_limits<double>::infinity();
+      // Restart the Halpern sequence at the step's point, with a rebalanced primal weight.
+      weight = SmoothedPrimalWeight(
+          weight, ChunkedDistance(step.x, anchor.x), ChunkedDistance(step.y, anchor.y));
+      anchor = step;
+      current = step;
+      restart_gap = gap;
+      previous_gap = std::numeric_limits<double>::infinity();
       since_restart = 0;
       ++restarts_;
-      std::fill(sum.x.begin(), sum.x.end(), 0.0);
-      std::fill(sum.y.begin(), sum.y.end(), 0.0);
     }
     ThrowError(ErrorCode::kSolverFailed,
                kPdhgEnergyStage,
@@ -179,49 +169,51 @@ class EnergyPdhg {
   }
 
  private:
-  // One iteration: x+ = clip(x - tau/w (u + K^T y)), y+ = clip(y + w sigma (K (2x+ - x) + b)).
-  void Step(const Point& at,
-            double weight,
-            Point& out,
-            std::vector<double>& extrapolated,
-            Point& sum) const {
+  // One iteration: the PDHG operator T, x+ = clip(x - tau/w (u + K^T y)), then
+  // y+ = clip(y + w sigma (K (2 x+ - x) + b)), written to `step`; and the reflected Halpern
+  // iteration (Lu & Yang 2024, "Restarted Halpern PDHG for linear programming") in place,
+  // z <- (k+1)/(k+2) (2 T(z) - z) + 1/(k+2) z_0, k the iterations since the restart and z_0 the
+  // restart point. A column's z is replaced once T no longer needs it (the rows read only the
+  // extrapolated x), a row's right after its own update. On the block engine's Andalusian energy
+  // 12,864 iterations where PDLP's restarts to the average took 16,128
+  // (docs/design/lp_backend.md, "Energy pdhg").
+  void Iterate(Point& z,
+               const Point& anchor,
+               std::int64_t k,
+               double weight,
+               Point& step,
+               std::vector<double>& extrapolated) const {
+    const double lambda = (static_cast<double>(k) + 1.0) / (static_cast<double>(k) + 2.0);
     ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j) {
         if (tau_[j] == 0.0) {
-          out.x[j] = at.x[j];
+          step.x[j] = z.x[j];
         } else {
           double g = p_.unary[j];
-          for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
-            g += p_.col_signs[k] * at.y[p_.col_rows[k]];
+          for (std::uint32_t i = p_.col_offsets[j]; i < p_.col_offsets[j + 1]; ++i) {
+            g += p_.col_signs[i] * z.y[p_.col_rows[i]];
           }
-          out.x[j] = std::clamp(at.x[j] - tau_[j] / weight * g, 0.0, 1.0);
+          step.x[j] = std::clamp(z.x[j] - tau_[j] / weight * g, 0.0, 1.0);
         }
-        extrapolated[j] = 2.0 * out.x[j] - at.x[j];
-        sum.x[j] += out.x[j];
+        extrapolated[j] = 2.0 * step.x[j] - z.x[j];
       }
     });
     ForChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
       for (std::size_t r = begin; r < end; ++r) {
         double kx = p_.b[r];
-        for (std::uint32_t k = p_.row_offsets[r]; k < p_.row_offsets[r + 1]; ++k) {
-          kx += p_.row_signs[k] * extrapolated[p_.row_columns[k]];
+        for (std::uint32_t i = p_.row_offsets[r]; i < p_.row_offsets[r + 1]; ++i) {
+          kx += p_.row_signs[i] * extrapolated[p_.row_columns[i]];
         }
-        out.y[r] = std::clamp(at.y[r] + weight * sigma_[r] * kx, p_.lower[r], p_.upper[r]);
-        sum.y[r] += out.y[r];
+        step.y[r] = std::clamp(z.y[r] + weight * sigma_[r] * kx, p_.lower[r], p_.upper[r]);
+        z.y[r] = lambda * (2.0 * step.y[r] - z.y[r]) + (1.0 - lambda) * anchor.y[r];
       }
     });
-  }
-
-  static Point Average(const Point& sum, std::int64_t count) {
-    Point a = sum;
-    const double inv = 1.0 / static_cast<double>(count);
-    ForChunks(a.x.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t j = b; j < e; ++j) a.x[j] *= inv;
+    // extrapolated = 2 T(x) - x: the reflection of x already.
+    ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t j = begin; j < end; ++j) {
+        z.x[j] = lambda * extrapolated[j] + (1.0 - lambda) * anchor.x[j];
+      }
     });
-    ForChunks(a.y.size(), [&](std::size_t b, std::size_t e) {
-      for (std::size_t r = b; r < e; ++r) a.y[r] *= inv;
-    });
-    return a;
   }
 
   // D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j): a lower bound for any y in the box.
