@@ -8,10 +8,11 @@
 ///   w max(0, 1 - sum x)    = max_{y in [0, w]}  y (1 - sum x)
 ///   w |sum nu x + k|       = max_{y in [-w, w]} y (sum nu x + k)
 /// so the relaxation is min_{x in [0,1]^n} max_{y in Y} u.x + y.(K x + b) with one multiplier per
-/// term and K of +-1 entries. Chambolle-Pock iterations with the diagonal preconditioning of Pock
-/// & Chambolle (2011, alpha = 1: steps 1 / entries per column and per row), adaptive restarts to
-/// the average iterate and a primal weight, as PDLP does for LPs. Both sets are boxes, so every
-/// iterate is feasible: the primal value is the energy of x, and every y proves the lower bound
+/// term and K of +-1 entries. Chambolle-Pock steps with the diagonal preconditioning of Pock &
+/// Chambolle (2011, alpha = 1: steps 1 / entries per column and per row) in reflected Halpern
+/// iterations with restarts and a primal weight (Lu & Yang 2024; PDLP's restart rules). Both
+/// sets are boxes, so every step's point is feasible: the primal value is the energy of x, and
+/// every y proves the lower bound
 ///   D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j)
 /// of the relaxation (and so of the integral optimum). Stops when the best primal value and the
 /// best bound are within LabelingOptions::pdhg_tolerance (relative).
