@@ -98,6 +98,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.block_margin, e.blocks.support.margin_blocks);
   EXPECT_EQ(o.box_margin, e.box_margin);
   EXPECT_EQ(o.measure_quality, e.measure_quality);
+  EXPECT_EQ(o.remove_floating_fragments, e.remove_floating_fragments);
   EXPECT_EQ(o.quality.fit_factor, e.quality.fit_factor);
   EXPECT_EQ(o.quality.samples_per_segment, e.quality.samples_per_segment);
   EXPECT_EQ(o.quality.min_lines_per_component, e.quality.min_lines_per_component);

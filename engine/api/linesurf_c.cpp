@@ -176,6 +176,7 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"block_margin", Integer(&ReconstructOptions::block_margin)},
       {"box_margin", LINESURF_C_REAL(box_margin)},
       {"measure_quality", Flag(&ReconstructOptions::measure_quality)},
+      {"remove_floating_fragments", Flag(&ReconstructOptions::remove_floating_fragments)},
       {"quality.fit_factor", LINESURF_C_REAL(quality.fit_factor)},
       {"quality.samples_per_segment",
        NestedInteger(&ReconstructOptions::quality, &QualityOptions::samples_per_segment)},

@@ -118,6 +118,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.blocks.support.margin_blocks = options.block_margin;
   o.box_margin = options.box_margin;
   o.measure_quality = options.measure_quality;
+  o.remove_floating_fragments = options.remove_floating_fragments;
   SetEngineQuality(options.quality, o.quality);
   o.triangulate = options.triangulate;
   o.num_threads = options.num_threads;

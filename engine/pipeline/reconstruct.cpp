@@ -276,7 +276,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       result.mesh = std::move(surface.mesh);
       stats.split_vertices = surface.stats.split_vertices;
     }
-    const IndexTopology topology = CheckIndexTopology(result.mesh);
+    IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 
     facts.full_cells = static_cast<std::size_t>(
@@ -294,6 +294,21 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     if (judgement.error) throw LinesurfException(*judgement.error);
     result.warnings.insert(result.warnings.end(), judgement.warnings.begin(),
                            judgement.warnings.end());
+
+    // On a surface the judgement accepted (not empty, not inverted); the pieces left are closed.
+    if (options.remove_floating_fragments) {
+      timer.Start("fragments");
+      FragmentRemoval kept = ValueOrThrow(RemoveFloatingFragments(
+          result.mesh, scene, stats.epsilon.epsilon, options.quality, stage_ctx));
+      if (kept.removed_components > 0) {
+        result.mesh = std::move(kept.mesh);
+        topology = CheckIndexTopology(result.mesh);
+      }
+      stats.removed_fragments = kept.removed_components;
+      stats.removed_fragment_volume = kept.removed_volume;
+      stats.removed_fragment_segments = kept.removed_supported_segments;
+      timer.Stop();
+    }
 
     // Figures without ground truth, in the local frame, on a surface the judgement accepted.
     if (options.measure_quality) {

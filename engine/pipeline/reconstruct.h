@@ -88,6 +88,11 @@ struct ReconstructOptions {
   /// RunStats::quality. Default true.
   bool measure_quality = true;
   SurfaceQualityOptions quality;
+  /// Drop the surface's floating fragments (components holding fewer than
+  /// quality.min_lines_per_component supported lines, RemoveFloatingFragments) when another
+  /// component holds more; RunStats::removed_fragments counts them. Default true: pieces behind
+  /// one or two lines (clutter, vegetation) are not the building (docs/reconstruction.md).
+  bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
   /// Worker threads: 0 = automatic, 1 = serial. Results do not depend on it.

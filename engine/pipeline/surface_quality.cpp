@@ -25,6 +25,8 @@ constexpr const char* kSurfaceQualityStage = "surface_quality";
 /// Segments per parallel task; fixed so the chunking never depends on the thread count.
 constexpr std::size_t kSegmentGrain = 64;
 constexpr int kMaxSamplesPerSegment = 1024;
+/// A vertex no kept face uses.
+constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 /// Parts of one line: every endpoint within this fraction of the median segment length of the
 /// other's line (as eps auto counts them).
 constexpr double kCollinearPartsOverMedianLength = 1e-5;
@@ -176,11 +178,18 @@ double FaceVolume(const PolygonMesh& mesh, std::size_t f) {
   return v;
 }
 
-SurfaceQuality Measure(const PolygonMesh& mesh,
-                       const Scene& scene,
-                       double epsilon,
-                       const SurfaceQualityOptions& options,
-                       const RunContext& ctx) {
+/// The figures with the components in the order of FaceComponents (first face), each marked
+/// floating or not, and the component of every face.
+struct ComponentFigures {
+  SurfaceQuality quality;
+  std::vector<std::uint32_t> face_component;
+};
+
+ComponentFigures Analyse(const PolygonMesh& mesh,
+                         const Scene& scene,
+                         double epsilon,
+                         const SurfaceQualityOptions& options,
+                         const RunContext& ctx) {
   LINESURF_THROW_IF(
       scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
       kInvalidInput,
@@ -250,16 +259,27 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
   for (std::size_t c = 0; c < index.num_components; ++c) {
     std::vector<std::uint32_t>& held = lines_held[c];
     std::sort(held.begin(), held.end());
-    q.components[c].supported_lines =
+    ComponentQuality& component = q.components[c];
+    component.supported_lines =
         static_cast<std::size_t>(std::unique(held.begin(), held.end()) - held.begin());
+    component.floating =
+        component.supported_lines < static_cast<std::size_t>(options.min_lines_per_component);
   }
+  return {std::move(q), index.face_component};
+}
+
+SurfaceQuality Measure(const PolygonMesh& mesh,
+                       const Scene& scene,
+                       double epsilon,
+                       const SurfaceQualityOptions& options,
+                       const RunContext& ctx) {
+  SurfaceQuality q = Analyse(mesh, scene, epsilon, options, ctx).quality;
   std::stable_sort(q.components.begin(),
                    q.components.end(),
                    [](const ComponentQuality& a, const ComponentQuality& b) {
                      return std::abs(a.volume) > std::abs(b.volume);
                    });
-  for (ComponentQuality& c : q.components) {
-    c.floating = c.supported_lines < static_cast<std::size_t>(options.min_lines_per_component);
+  for (const ComponentQuality& c : q.components) {
     q.floating_fragments += c.floating ? 1 : 0;
     q.enclosed_volume += std::abs(c.volume);
   }
@@ -267,6 +287,49 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
       q.enclosed_volume > 0.0 ? std::abs(q.components.front().volume) / q.enclosed_volume : 0.0;
   q.planes_off_surface = PlanesOffSurface(mesh, scene, epsilon);
   return q;
+}
+
+FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
+                                const Scene& scene,
+                                double epsilon,
+                                const SurfaceQualityOptions& options,
+                                const RunContext& ctx) {
+  const ComponentFigures figures = Analyse(mesh, scene, epsilon, options, ctx);
+  const std::vector<ComponentQuality>& components = figures.quality.components;
+  FragmentRemoval out;
+  // A surface of fragments only is left whole: what holds the most is not known to be noise.
+  if (std::all_of(components.begin(), components.end(), [](const ComponentQuality& c) {
+        return c.floating;
+      })) {
+    out.mesh = mesh;
+    return out;
+  }
+  for (const ComponentQuality& c : components) {
+    if (!c.floating) continue;
+    ++out.removed_components;
+    out.removed_volume += std::abs(c.volume);
+    out.removed_supported_segments += c.supported_segments;
+  }
+  // Kept faces in order; their vertices renumbered in order of first use by the kept faces'
+  // vertex ids (ascending), so the mesh is unchanged when nothing is removed.
+  std::vector<std::uint32_t> new_index(mesh.vertices.size(), kNoVertex);
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    if (components[figures.face_component[f]].floating) continue;
+    for (std::uint32_t v : mesh.Face(f)) new_index[v] = 0;
+  }
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (new_index[v] == kNoVertex) continue;
+    new_index[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
+    out.mesh.vertices.push_back(mesh.vertices[v]);
+  }
+  std::vector<std::uint32_t> face;
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    if (components[figures.face_component[f]].floating) continue;
+    face.clear();
+    for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
+    out.mesh.AddFace(face);
+  }
+  return out;
 }
 
 }  // namespace
@@ -298,6 +361,20 @@ Expected<SurfaceQuality> MeasureSurfaceQuality(const PolygonMesh& mesh,
   }
   return CatchAll(kSurfaceQualityStage, [&] {
     return RunInArena(ctx, [&] { return Measure(mesh, scene, epsilon, options, ctx); });
+  });
+}
+
+Expected<FragmentRemoval> RemoveFloatingFragments(const PolygonMesh& mesh,
+                                                  const Scene& scene,
+                                                  double epsilon,
+                                                  const SurfaceQualityOptions& options,
+                                                  const RunContext& ctx) noexcept {
+  if (Status s = options.Validate(); !s) return s.error();
+  if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
+    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
+  }
+  return CatchAll(kSurfaceQualityStage, [&] {
+    return RunInArena(ctx, [&] { return RemoveFragments(mesh, scene, epsilon, options, ctx); });
   });
 }
 

@@ -51,4 +51,26 @@ using SurfaceQuality = ::linesurf::SurfaceQuality;
                                                              const SurfaceQualityOptions& options,
                                                              const RunContext& ctx) noexcept;
 
+/// A surface without its floating fragments.
+struct FragmentRemoval {
+  PolygonMesh mesh;
+  std::size_t removed_components = 0;
+  double removed_volume = 0.0;  ///< sum of the removed components' |volume|
+  std::size_t removed_supported_segments = 0;
+};
+
+/// @brief `mesh` without the components that MeasureSurfaceQuality calls floating fragments
+/// (fewer than options.min_lines_per_component supported lines; components as there): their
+/// faces and the vertices only they use. The kept faces and vertices keep their order, so a mesh
+/// without fragments comes back unchanged. Every component is a closed surface of its own, so
+/// what is kept stays closed and 2-manifold. A mesh whose components are all fragments is kept
+/// whole (nothing tells which of them is noise).
+/// @return the errors of MeasureSurfaceQuality. Deterministic for any thread count.
+[[nodiscard]] Expected<FragmentRemoval> RemoveFloatingFragments(
+    const PolygonMesh& mesh,
+    const Scene& scene,
+    double epsilon,
+    const SurfaceQualityOptions& options,
+    const RunContext& ctx) noexcept;
+
 }  // namespace linesurf::pipeline

@@ -172,6 +172,49 @@ TEST(SurfaceQuality, IdenticalForAnyThreadCount) {
   EXPECT_EQ(a.components.size(), b.components.size());
 }
 
+FragmentRemoval Remove(const PolygonMesh& mesh, const Scene& scene) {
+  Expected<FragmentRemoval> r = RemoveFloatingFragments(mesh, scene, kEps, {}, RunContext{});
+  EXPECT_TRUE(r.has_value()) << (r ? "" : r.error().message);
+  return r ? std::move(*r) : FragmentRemoval{};
+}
+
+TEST(RemoveFloatingFragments, DropsTheFragmentsAndKeepsTheRestAsItWas) {
+  // The cube, a floating box between two fragments of no support, in face order: fragment,
+  // cube, fragment.
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(10, 10, 10), Vec3(10.5, 10.5, 10.5));
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(-10, 0, 0), Vec3(-9, 2, 1));
+  const Scene scene = CubeScene();
+  const FragmentRemoval r = Remove(mesh, scene);
+  EXPECT_EQ(r.removed_components, 2u);
+  EXPECT_NEAR(r.removed_volume, 0.125 + 2.0, 1e-12);
+  EXPECT_EQ(r.removed_supported_segments, 0u);
+  PolygonMesh cube;
+  AddBox(cube, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  EXPECT_EQ(r.mesh.vertices, cube.vertices);
+  EXPECT_EQ(r.mesh.face_indices, cube.face_indices);
+  EXPECT_EQ(r.mesh.face_offsets, cube.face_offsets);
+  const SurfaceQuality q = Measure(r.mesh, scene);
+  EXPECT_EQ(q.floating_fragments, 0u);
+  EXPECT_EQ(q.components.size(), 1u);
+}
+
+TEST(RemoveFloatingFragments, LeavesAMeshWithoutFragmentsAndAMeshOfFragmentsOnly) {
+  PolygonMesh cube;
+  AddBox(cube, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  const FragmentRemoval kept = Remove(cube, CubeScene());
+  EXPECT_EQ(kept.removed_components, 0u);
+  EXPECT_EQ(kept.mesh.vertices, cube.vertices);
+  EXPECT_EQ(kept.mesh.face_indices, cube.face_indices);
+  // No segment at all: every component is a fragment, and none is known to be the noise.
+  PolygonMesh two = cube;
+  AddBox(two, Vec3(5, 5, 5), Vec3(6, 6, 6));
+  const FragmentRemoval whole = Remove(two, Scene{});
+  EXPECT_EQ(whole.removed_components, 0u);
+  EXPECT_EQ(whole.mesh.face_indices, two.face_indices);
+}
+
 TEST(SurfaceQuality, RejectsBadInput) {
   RunContext ctx;
   PolygonMesh empty;

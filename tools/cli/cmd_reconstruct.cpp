@@ -87,9 +87,15 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
                  {"lower_bound_source", s.lower_bound_source},
                  {"gap", bounded ? nlohmann::json(s.objective - s.lower_bound) : nlohmann::json()},
                  {"fractional_cells", s.fractional_cells}};
-  j["mesh"] = {{"vertices", s.mesh_vertices}, {"faces", s.mesh_faces},
-               {"closed", s.mesh_closed},     {"manifold", s.mesh_manifold},
-               {"volume", s.mesh_volume},     {"split_vertices", s.split_vertices}};
+  j["mesh"] = {{"vertices", s.mesh_vertices},
+               {"faces", s.mesh_faces},
+               {"closed", s.mesh_closed},
+               {"manifold", s.mesh_manifold},
+               {"volume", s.mesh_volume},
+               {"split_vertices", s.split_vertices},
+               {"removed_fragments", s.removed_fragments},
+               {"removed_fragment_volume", s.removed_fragment_volume},
+               {"removed_fragment_segments", s.removed_fragment_segments}};
   j["peak_memory_bytes"] = s.peak_memory_bytes;
   j["warnings"] = r.warnings;
   return j;
@@ -149,6 +155,14 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
                  s.mesh_manifold ? "2-manifold" : "NOT 2-manifold", s.total_seconds);
     std::fprintf(stderr, "reconstruct: eps %.6g (%s)\n", s.epsilon.epsilon,
                  s.epsilon.source.c_str());
+    if (s.removed_fragments > 0) {
+      std::fprintf(stderr,
+                   "reconstruct: removed %zu floating fragments (volume %.6g, %zu supported "
+                   "segments)\n",
+                   s.removed_fragments,
+                   s.removed_fragment_volume,
+                   s.removed_fragment_segments);
+    }
     if (s.quality_measured) {
       std::fputs(SurfaceQualitySummary(s.quality, "reconstruct: ").c_str(), stderr);
     }
@@ -232,6 +246,10 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
             o.measure_quality,
             "Figures without ground truth in the report (data fit, visibility, components; "
             "--quality=false skips them)");
+  r.AddFlag("remove-fragments",
+            o.remove_floating_fragments,
+            "Drop floating fragments: components holding fewer supported lines than 3 "
+            "(--remove-fragments=false keeps them)");
   RegisterDetectionOptions(r, o.detection, "detect-");
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;

@@ -151,6 +151,9 @@ void BindOptions(py::module_& m) {
           .Field("block_margin", &R::block_margin, "blocks a plane's support is dilated by [0, 64]")
           .Field("box_margin", &R::box_margin, "box growth, fraction of its extent (0, 10]")
           .Field("measure_quality", &R::measure_quality, "quality figures in the report")
+          .Field("remove_floating_fragments",
+                 &R::remove_floating_fragments,
+                 "drop components holding fewer than quality.min_lines_per_component lines")
           .Field("quality", &R::quality, "QualityOptions")
           .Field("triangulate", &R::triangulate, "triangulate the output faces")
           .Field("num_threads", &R::num_threads, "worker threads (0 = automatic)")

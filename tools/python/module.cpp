@@ -131,6 +131,9 @@ py::dict ReportOf(const ReconstructStats& stats) {
   LINESURF_REPORT(mesh_manifold);
   LINESURF_REPORT(mesh_volume);
   LINESURF_REPORT(split_vertices);
+  LINESURF_REPORT(removed_fragments);
+  LINESURF_REPORT(removed_fragment_volume);
+  LINESURF_REPORT(removed_fragment_segments);
   if (stats.quality_measured) report["quality"] = ReportOf(stats.quality);
   LINESURF_REPORT(peak_memory_bytes);
   return report;

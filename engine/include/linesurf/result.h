@@ -125,6 +125,11 @@ struct ReconstructStats {
   bool mesh_manifold = false;
   double mesh_volume = 0.0;  ///< signed; positive for an exterior solid
   std::size_t split_vertices = 0;
+  /// Floating fragments removed from the surface (ReconstructOptions::remove_floating_fragments),
+  /// their total |volume| and the supported segments they held.
+  std::size_t removed_fragments = 0;
+  double removed_fragment_volume = 0.0;
+  std::size_t removed_fragment_segments = 0;
   /// Figures without ground truth (valid when quality_measured; see
   /// ReconstructOptions::measure_quality).
   SurfaceQuality quality;
