@@ -148,7 +148,9 @@ std::vector<std::uint32_t> LineOfSegment(const Scene& scene) {
   return line;
 }
 
-std::vector<std::uint32_t> PlanesOffSurface(const PolygonMesh& mesh, const Scene& scene, double eps) {
+std::vector<std::uint32_t> PlanesOffSurface(const PolygonMesh& mesh,
+                                            const Scene& scene,
+                                            double eps) {
   std::vector<bool> on(scene.planes.size(), false);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
@@ -350,15 +352,24 @@ Status SurfaceQualityOptions::Validate() const {
   return {};
 }
 
+namespace {
+
+Status ValidateArguments(const SurfaceQualityOptions& options, double epsilon) {
+  if (Status s = options.Validate(); !s) return s;
+  if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
+    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
+  }
+  return {};
+}
+
+}  // namespace
+
 Expected<SurfaceQuality> MeasureSurfaceQuality(const PolygonMesh& mesh,
                                                const Scene& scene,
                                                double epsilon,
                                                const SurfaceQualityOptions& options,
                                                const RunContext& ctx) noexcept {
-  if (Status s = options.Validate(); !s) return s.error();
-  if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
-    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
-  }
+  if (Status s = ValidateArguments(options, epsilon); !s) return s.error();
   return CatchAll(kSurfaceQualityStage, [&] {
     return RunInArena(ctx, [&] { return Measure(mesh, scene, epsilon, options, ctx); });
   });
@@ -369,10 +380,7 @@ Expected<FragmentRemoval> RemoveFloatingFragments(const PolygonMesh& mesh,
                                                   double epsilon,
                                                   const SurfaceQualityOptions& options,
                                                   const RunContext& ctx) noexcept {
-  if (Status s = options.Validate(); !s) return s.error();
-  if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
-    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
-  }
+  if (Status s = ValidateArguments(options, epsilon); !s) return s.error();
   return CatchAll(kSurfaceQualityStage, [&] {
     return RunInArena(ctx, [&] { return RemoveFragments(mesh, scene, epsilon, options, ctx); });
   });

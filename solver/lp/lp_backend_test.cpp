@@ -1,15 +1,16 @@
 #include "solver/lp/lp_backend.h"
 
+#include "solver/lp/backends/cbc/cbc_backend.h"
+#include "solver/testing/random_energy.h"
+#include "tests/support/thread_count.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
-
-#include "solver/lp/backends/cbc/cbc_backend.h"
-#include "solver/testing/random_energy.h"
-#include "tests/support/thread_count.h"
 
 namespace linesurf::solver {
 namespace {
@@ -30,7 +31,6 @@ LabelingResult MustSolve(const EnergyInput& e, const std::string& backend, int t
   if (!result) return {};
   return std::move(result).value();
 }
-
 
 // A chain 0-1-...-5: strong evidence for full at cell 1 and 4, pairwise terms between
 // neighbours, the ends fixed empty. Min cut: full on 1..4 costs 2 (two cut pairs) and less than
@@ -124,13 +124,16 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
     const LabelingResult other = MustSolve(e, GetParam());
     // The relaxation bounds the integral optimum from below.
     EXPECT_LE(clp.relaxed_objective, best + kObjectiveTolerance);
-    EXPECT_NEAR(other.relaxed_objective, clp.relaxed_objective, kPdhgAgreement * (1.0 + clp.relaxed_objective))
+    EXPECT_NEAR(other.relaxed_objective,
+                clp.relaxed_objective,
+                kPdhgAgreement * (1.0 + clp.relaxed_objective))
         << "seed " << seed;
     if (clp.fractional_cells == 0) {
       ++integral;
       // An integral LP optimum is an integral optimum; labels must agree where it is unique.
       EXPECT_NEAR(clp.labels_objective, best, kObjectiveTolerance) << "seed " << seed;
-      EXPECT_NEAR(other.labels_objective, clp.labels_objective, kObjectiveTolerance) << "seed " << seed;
+      EXPECT_NEAR(other.labels_objective, clp.labels_objective, kObjectiveTolerance)
+          << "seed " << seed;
     }
   }
   EXPECT_GT(integral, 5);
@@ -280,7 +283,8 @@ TEST(SolveLabeling, BandIsAnUpperBoundOfTheFullLpAndKeepsFixes) {
     const LabelingResult band = MustSolve(e, "band");
     EXPECT_EQ(band.backend.rfind("band+", 0), 0u) << band.backend;
     EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance) << seed;
-    EXPECT_NEAR(band.labels_objective, e.Evaluate(std::span<const std::uint8_t>(band.labels)),
+    EXPECT_NEAR(band.labels_objective,
+                e.Evaluate(std::span<const std::uint8_t>(band.labels)),
                 kObjectiveTolerance);
     for (std::size_t c = 0; c < e.NumCells(); ++c) {
       const CellFix f = e.fixed[CellId(c)];
@@ -445,47 +449,30 @@ TEST(ImprovedLabelling, IsIdenticalForAnyThreadCount) {
 namespace linesurf::solver {
 namespace {
 
-TEST(SolveLabeling, PdhgDualBoundIsAValidAndCloseLowerBound) {
+// The first-order backends prove bounds from their dual points: below Clp's LP optimum, and
+// within the tolerance of it at the end.
+TEST(SolveLabeling, FirstOrderDualBoundsAreValidAndCloseLowerBounds) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 10;
   const EnergyInput e = testing::GridEnergy(spec);
   const LabelingResult clp = MustSolve(e, "clp");
-  const LabelingResult pdhg = MustSolve(e, "pdhg");
-  EXPECT_EQ(pdhg.lower_bound_source, "lp dual bound");
-  EXPECT_LE(pdhg.lower_bound, clp.relaxed_objective + kObjectiveTolerance);
-  EXPECT_GE(pdhg.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement));
-  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    testing::RandomEnergySpec random;
-    random.seed = seed;
-    const EnergyInput r = testing::RandomEnergy(random);
-    // Without windows: one window holding every cell would prove the (higher) integer optimum.
-    const LabelingResult pdhg_only = SolveWith(r, RoundingAndLocalSearch("pdhg"));
-    EXPECT_EQ(pdhg_only.lower_bound_source, "lp dual bound");
-    EXPECT_LE(pdhg_only.lower_bound,
-              MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
-        << seed;
-  }
-}
-
-// Every multiplier point of pdhg-energy proves a bound: below Clp's LP optimum, and within the
-// tolerance of it at the end.
-TEST(SolveLabeling, PdhgEnergyDualBoundIsAValidAndCloseLowerBound) {
-  testing::GridEnergySpec spec;
-  spec.nx = spec.ny = spec.nz = 10;
-  const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult clp = MustSolve(e, "clp");
-  const LabelingResult energy_pdhg = MustSolve(e, "pdhg-energy");
-  EXPECT_EQ(energy_pdhg.lower_bound_source, "energy dual bound");
-  EXPECT_LE(energy_pdhg.lower_bound, clp.relaxed_objective + kObjectiveTolerance);
-  EXPECT_GE(energy_pdhg.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement));
-  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    testing::RandomEnergySpec random;
-    random.seed = seed;
-    const EnergyInput r = testing::RandomEnergy(random);
-    const LabelingResult only = SolveWith(r, RoundingAndLocalSearch("pdhg-energy"));
-    EXPECT_EQ(only.lower_bound_source, "energy dual bound");
-    EXPECT_LE(only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
-        << seed;
+  const std::pair<const char*, const char*> kSources[] = {{"pdhg", "lp dual bound"},
+                                                          {"pdhg-energy", "energy dual bound"}};
+  for (const auto& [backend, source] : kSources) {
+    const LabelingResult first_order = MustSolve(e, backend);
+    EXPECT_EQ(first_order.lower_bound_source, source);
+    EXPECT_LE(first_order.lower_bound, clp.relaxed_objective + kObjectiveTolerance) << backend;
+    EXPECT_GE(first_order.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement)) << backend;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      testing::RandomEnergySpec random;
+      random.seed = seed;
+      const EnergyInput r = testing::RandomEnergy(random);
+      // Without windows: one window holding every cell would prove the (higher) integer optimum.
+      const LabelingResult only = SolveWith(r, RoundingAndLocalSearch(backend));
+      EXPECT_EQ(only.lower_bound_source, source);
+      EXPECT_LE(only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
+          << backend << " " << seed;
+    }
   }
 }
 
