@@ -35,7 +35,7 @@ std::string ResolveBackend(const std::string& requested, const ReducedEnergy& re
   if (!reduced.HasHigherOrderTerms()) return "maxflow";
   if (num_blocks > 1 && lp_columns > options.auto_blocks_min_columns) return "blocks";
   if (lp_columns > options.auto_band_min_columns) return "band";
-  return lp_columns <= options.auto_clp_max_columns ? "clp" : "pdhg";
+  return lp_columns <= options.auto_clp_max_columns ? "clp" : "pdhg-energy";
 }
 
 LabelingResult Solve(const EnergyInput& energy, std::span<const std::uint32_t> block_of_cell,

@@ -17,15 +17,15 @@
 ///               bounded multiplier per term, no slack columns; every multiplier point proves a
 ///               lower bound. Identical for any thread count.
 ///  - "band":    for large complexes (band_fixing.h): exact max-flow of the unary and pairwise
-///               terms, then the LP ("auto" among clp/pdhg) of the cells near that surface only,
+///               terms, then the LP ("auto" among clp/pdhg-energy) of the cells near that surface only,
 ///               every other cell fixed at its max-flow label. A heuristic: not the full LP's
 ///               optimum in general.
 ///  - "auto":    "maxflow" when it is exact, else "blocks" above auto_blocks_min_columns LP
 ///               columns when a partition of more than one block is given, else "clp" up to
-///               auto_clp_max_columns LP columns, else "pdhg" (see docs/design/lp_backend.md for
-///               the measurements). "band" only above auto_band_min_columns, which is off by
-///               default: band changes the result (measured on an Andalusian crop,
-///               docs/results.md "Integral labelling").
+///               auto_clp_max_columns LP columns, else "pdhg-energy" (see
+///               docs/design/lp_backend.md for the measurements). "band" only above
+///               auto_band_min_columns, which is off by default: band changes the result
+///               (measured on an Andalusian crop, docs/results.md "Integral labelling").
 ///  - "blocks":  per-block solve for large complexes (block_labeling.h), given a partition of
 ///               the cells into blocks: each block's interior energy solved by
 ///               LabelingOptions::block_backend, in parallel, each with a halo of its
@@ -74,7 +74,7 @@ struct LabelingOptions {
   double pdhg_tolerance = 1e-4;
   /// Iteration cap of pdhg; >= 1. Reaching it is a failure (kSolverFailed).
   std::int64_t pdhg_max_iterations = 200000;
-  /// "auto" uses clp up to this many LP columns and pdhg beyond; >= 0. On grid energies with
+  /// "auto" uses clp up to this many LP columns and pdhg-energy beyond; >= 0. On grid energies with
   /// parity terms Clp's dual simplex grows about cubically (0.19 s CPU at 3.8k columns, 3.4 s at
   /// 12.6k, 151 s at 42k) while pdhg stays below 0.4 s up to 12.6k (docs/design/lp_backend.md).
   std::size_t auto_clp_max_columns = 10000;
@@ -93,8 +93,8 @@ struct LabelingOptions {
   /// complex (k-d blocks of the cells' centroids, pipeline::CentroidBlocks; the block engine
   /// uses its own blocks); >= 1. The solver itself takes any partition it is given.
   std::size_t block_max_cells = 4000;
-  /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg by the block's
-  /// size), "clp", "pdhg" or "cbc".
+  /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg-energy by the
+  /// block's size), "clp", "pdhg" or "cbc".
   std::string block_backend = "auto";
   /// Sweeps of "blocks" (each solves the blocks whose cells or neighbours changed since their
   /// last solve); [0, 100]. 0 = the max-flow start and the final moves only.

@@ -181,7 +181,7 @@ TEST(SolveLabeling, AutoPicksMaxflowOnlyWhenExact) {
   options.auto_clp_max_columns = 5;
   const auto large = SolveLabeling(testing::RandomEnergy(spec), options, RunContext{});
   ASSERT_TRUE(large);
-  EXPECT_EQ(large->backend, "pdhg");
+  EXPECT_EQ(large->backend, "pdhg-energy");
 }
 
 TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {

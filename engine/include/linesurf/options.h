@@ -87,7 +87,7 @@ enum class SceneMode {
 
 /// LP backend of the labelling (docs/solver.md).
 enum class SolverBackend {
-  kAuto,        ///< maxflow when exact, else blocks (large LPs) / clp / pdhg by model size
+  kAuto,        ///< maxflow when exact, else blocks (large LPs) / clp / pdhg-energy by size
   kClp,         ///< COIN-OR Clp dual simplex: exact, the reference
   kMaxflow,     ///< exact max-flow; refused (kInvalidOptions) on energies with higher-order terms
   kPdhg,        ///< first-order primal-dual: approximate optimum, fast on large complexes
