@@ -88,7 +88,7 @@ struct ReconstructOptions {
   /// RunStats::quality. Default true.
   bool measure_quality = true;
   SurfaceQualityOptions quality;
-  /// Drop the surface's floating fragments (components holding fewer than
+  /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines, RemoveFloatingFragments) when another
   /// component holds more; RunStats::removed_fragments counts them. Default true: pieces behind
   /// one or two lines (clutter, vegetation) are not the building (docs/reconstruction.md).

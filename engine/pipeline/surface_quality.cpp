@@ -298,6 +298,11 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
                                 const RunContext& ctx) {
   const ComponentFigures figures = Analyse(mesh, scene, epsilon, options, ctx);
   const std::vector<ComponentQuality>& components = figures.quality.components;
+  // Solid pieces only (positive volume: full cells inside): dropping the inner shell of a void
+  // would fill the void.
+  const auto removed = [&](std::uint32_t c) {
+    return components[c].floating && components[c].volume > 0.0;
+  };
   FragmentRemoval out;
   // A surface of fragments only is left whole: what holds the most is not known to be noise.
   if (std::all_of(components.begin(), components.end(), [](const ComponentQuality& c) {
@@ -306,17 +311,17 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
     out.mesh = mesh;
     return out;
   }
-  for (const ComponentQuality& c : components) {
-    if (!c.floating) continue;
+  for (std::uint32_t c = 0; c < components.size(); ++c) {
+    if (!removed(c)) continue;
     ++out.removed_components;
-    out.removed_volume += std::abs(c.volume);
-    out.removed_supported_segments += c.supported_segments;
+    out.removed_volume += components[c].volume;
+    out.removed_supported_segments += components[c].supported_segments;
   }
-  // Kept faces in order; their vertices renumbered in order of first use by the kept faces'
-  // vertex ids (ascending), so the mesh is unchanged when nothing is removed.
+  // The kept faces and the vertices they use, each in their order: the mesh is unchanged when
+  // nothing is removed.
   std::vector<std::uint32_t> new_index(mesh.vertices.size(), kNoVertex);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (components[figures.face_component[f]].floating) continue;
+    if (removed(figures.face_component[f])) continue;
     for (std::uint32_t v : mesh.Face(f)) new_index[v] = 0;
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -326,7 +331,7 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
   }
   std::vector<std::uint32_t> face;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (components[figures.face_component[f]].floating) continue;
+    if (removed(figures.face_component[f])) continue;
     face.clear();
     for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
     out.mesh.AddFace(face);

@@ -55,13 +55,14 @@ using SurfaceQuality = ::linesurf::SurfaceQuality;
 struct FragmentRemoval {
   PolygonMesh mesh;
   std::size_t removed_components = 0;
-  double removed_volume = 0.0;  ///< sum of the removed components' |volume|
+  double removed_volume = 0.0;  ///< sum of the removed components' volumes (each > 0)
   std::size_t removed_supported_segments = 0;
 };
 
-/// @brief `mesh` without the components that MeasureSurfaceQuality calls floating fragments
-/// (fewer than options.min_lines_per_component supported lines; components as there): their
-/// faces and the vertices only they use. The kept faces and vertices keep their order, so a mesh
+/// @brief `mesh` without the solid components (positive volume) that MeasureSurfaceQuality calls
+/// floating fragments (fewer than options.min_lines_per_component supported lines; components as
+/// there): their faces and the vertices only they use. The inner shell of a void (negative
+/// volume) stays: dropping it would fill the void. The kept faces and vertices keep their order, so a mesh
 /// without fragments comes back unchanged. Every component is a closed surface of its own, so
 /// what is kept stays closed and 2-manifold. A mesh whose components are all fragments is kept
 /// whole (nothing tells which of them is noise).

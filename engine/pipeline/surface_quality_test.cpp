@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <vector>
 
 namespace linesurf::pipeline {
 namespace {
@@ -198,6 +199,30 @@ TEST(RemoveFloatingFragments, DropsTheFragmentsAndKeepsTheRestAsItWas) {
   const SurfaceQuality q = Measure(r.mesh, scene);
   EXPECT_EQ(q.floating_fragments, 0u);
   EXPECT_EQ(q.components.size(), 1u);
+}
+
+TEST(RemoveFloatingFragments, KeepsTheInnerShellOfAVoid) {
+  // A void inside the cube: its shell faces into the void (negative volume) and holds no line,
+  // a floating fragment by the measure, but dropping it would fill the void.
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  PolygonMesh shell;
+  AddBox(shell, Vec3(-0.2, -0.2, -0.2), Vec3(0.2, 0.2, 0.2));
+  const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), shell.vertices.begin(), shell.vertices.end());
+  for (std::size_t f = 0; f < shell.NumFaces(); ++f) {
+    std::vector<std::uint32_t> reversed;
+    for (std::uint32_t v : shell.Face(f)) reversed.insert(reversed.begin(), base + v);
+    mesh.AddFace(reversed);
+  }
+  const Scene scene = CubeScene();
+  const SurfaceQuality q = Measure(mesh, scene);
+  ASSERT_EQ(q.components.size(), 2u);
+  EXPECT_EQ(q.floating_fragments, 1u);
+  EXPECT_NEAR(q.components[1].volume, -0.064, 1e-12);
+  const FragmentRemoval r = Remove(mesh, scene);
+  EXPECT_EQ(r.removed_components, 0u);
+  EXPECT_EQ(r.mesh.face_indices, mesh.face_indices);
 }
 
 TEST(RemoveFloatingFragments, LeavesAMeshWithoutFragmentsAndAMeshOfFragmentsOnly) {

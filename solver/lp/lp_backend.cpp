@@ -220,9 +220,9 @@ Status LabelingOptions::Validate() const {
                          "band, blocks, cbc");
   }
   if (block_backend != "auto" && block_backend != "clp" && block_backend != "pdhg" &&
-      block_backend != "cbc") {
+      block_backend != "pdhg-energy" && block_backend != "cbc") {
     return InvalidOption("block_backend: '" + block_backend +
-                         "' is not one of auto, clp, pdhg, cbc");
+                         "' is not one of auto, clp, pdhg, pdhg-energy, cbc");
   }
   if ((backend == "cbc" || block_backend == "cbc") && !CbcAvailable()) {
     return InvalidOption("backend: 'cbc' is not in this build (install coinor-libcbc-dev and "

@@ -72,7 +72,7 @@ struct LabelingOptions {
   /// pdhg-energy on its duality gap; range (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our
   /// tests (docs/solver.md).
   double pdhg_tolerance = 1e-4;
-  /// Iteration cap of pdhg; >= 1. Reaching it is a failure (kSolverFailed).
+  /// Iteration cap of pdhg and pdhg-energy; >= 1. Reaching it is a failure (kSolverFailed).
   std::int64_t pdhg_max_iterations = 200000;
   /// "auto" uses clp up to this many LP columns and pdhg-energy beyond; >= 0. On grid energies with
   /// parity terms Clp's dual simplex grows about cubically (0.19 s CPU at 3.8k columns, 3.4 s at
@@ -94,7 +94,7 @@ struct LabelingOptions {
   /// uses its own blocks); >= 1. The solver itself takes any partition it is given.
   std::size_t block_max_cells = 4000;
   /// Backend of each block's solve in "blocks": "auto" (maxflow, clp or pdhg-energy by the
-  /// block's size), "clp", "pdhg" or "cbc".
+  /// block's size), "clp", "pdhg", "pdhg-energy" or "cbc".
   std::string block_backend = "auto";
   /// Sweeps of "blocks" (each solves the blocks whose cells or neighbours changed since their
   /// last solve); [0, 100]. 0 = the max-flow start and the final moves only.

@@ -178,7 +178,7 @@ struct ReconstructOptions {
   /// closest-point query per sample and one ray query per sample and view.
   bool measure_quality = true;
   QualityOptions quality;
-  /// Drop the surface's floating fragments (components holding fewer than
+  /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines) when another component holds more;
   /// counted in ReconstructStats::removed_fragments.
   bool remove_floating_fragments = true;

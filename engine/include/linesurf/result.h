@@ -126,7 +126,8 @@ struct ReconstructStats {
   double mesh_volume = 0.0;  ///< signed; positive for an exterior solid
   std::size_t split_vertices = 0;
   /// Floating fragments removed from the surface (ReconstructOptions::remove_floating_fragments),
-  /// their total |volume| and the supported segments they held.
+  /// their total volume and the supported segments they held. full_cells and split_vertices
+  /// describe the labelling's surface before the removal.
   std::size_t removed_fragments = 0;
   double removed_fragment_volume = 0.0;
   std::size_t removed_fragment_segments = 0;

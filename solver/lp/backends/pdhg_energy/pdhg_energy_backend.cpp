@@ -47,6 +47,12 @@ struct SaddleProblem {
 };
 
 SaddleProblem BuildSaddle(const ReducedEnergy& e) {
+  const std::size_t entries =
+      2 * e.pairs.size() + e.structural_columns.size() + e.parity_columns.size();
+  LINESURF_THROW_IF(entries >= std::numeric_limits<std::uint32_t>::max(),
+                    kResourceExhausted,
+                    kPdhgEnergyStage,
+                    "energy too large for 32-bit indices: " << entries << " term entries");
   SaddleProblem p;
   p.num_cols = e.NumFree();
   p.unary = e.unary;
@@ -133,7 +139,7 @@ class EnergyPdhg {
       ++since_restart;
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgEnergyStage, "pdhg-energy cancelled by the host");
-      if (it % kRestartCheckPeriod != 0) continue;
+      if (it % kRestartCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
