@@ -42,17 +42,7 @@ void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, 
 std::vector<std::uint32_t> SolveBlocks(const PreparedReconstruction& prepared,
                                        const solver::LabelingOptions& options) {
   if (options.backend != "auto" && options.backend != "blocks") return {};
-  if (prepared.blocks) {
-    const std::vector<std::size_t> offsets =
-        partition::GlobalCellOffsets(prepared.blocks->complexes);
-    std::vector<std::uint32_t> block_of_cell(offsets.back());
-    for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
-      std::fill(block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b]),
-                block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b + 1]),
-                static_cast<std::uint32_t>(b));
-    }
-    return block_of_cell;
-  }
+  if (prepared.blocks) return partition::BlockOfEachCell(prepared.blocks->complexes);
   if (options.backend == "auto" && prepared.complex.NumCells() <= options.block_max_cells) {
     return {};
   }

@@ -93,6 +93,17 @@ std::vector<std::size_t> GlobalCellOffsets(const BlockComplexes& complexes) {
   return offsets;
 }
 
+std::vector<std::uint32_t> BlockOfEachCell(const BlockComplexes& complexes) {
+  const std::vector<std::size_t> offsets = GlobalCellOffsets(complexes);
+  std::vector<std::uint32_t> block_of_cell(offsets.back());
+  for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
+    std::fill(block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b]),
+              block_of_cell.begin() + static_cast<std::ptrdiff_t>(offsets[b + 1]),
+              static_cast<std::uint32_t>(b));
+  }
+  return block_of_cell;
+}
+
 Eigen::Vector4d BlockComplexes::Coefficients(PlaneKey key) const {
   if (!key.IsFace()) return plane_coefficients[key.plane().index()];
   Eigen::Vector4d out = Eigen::Vector4d::Zero();

@@ -121,6 +121,10 @@ struct BlockComplexes {
 /// number of cells. Evidence, solve and stitch all number cells this way.
 [[nodiscard]] std::vector<std::size_t> GlobalCellOffsets(const BlockComplexes& complexes);
 
+/// The block of every global cell (GlobalCellOffsets numbering): the partition of the cells that
+/// the per-block labelling works on.
+[[nodiscard]] std::vector<std::uint32_t> BlockOfEachCell(const BlockComplexes& complexes);
+
 /// Builds the complex of every base block of `grid` (blocks in parallel inside an arena from
 /// ctx.num_threads), each split by the planes of `regions` that reach it, and the seam overlay
 /// of every shared face (faces in parallel). Identical for any thread count. Errors: those of

@@ -330,14 +330,8 @@ int EngineStudy(const char* path,
                               : pipeline::BoundaryMode::kExterior,
       ctx));
   const double evidence_seconds = Seconds(evidence_start);
-  const std::vector<std::size_t> offsets =
-      partition::GlobalCellOffsets(prepared.blocks->complexes);
-  std::vector<std::uint32_t> blocks(offsets.back());
-  for (std::size_t b = 0; b + 1 < offsets.size(); ++b) {
-    for (std::size_t c = offsets[b]; c < offsets[b + 1]; ++c) {
-      blocks[c] = static_cast<std::uint32_t>(b);
-    }
-  }
+  const std::vector<std::uint32_t> blocks =
+      partition::BlockOfEachCell(prepared.blocks->complexes);
   const std::string name = "engine " + planes;
   std::printf(
       "%s: %zu planes, block size %.3f, margin %d, %zu blocks, %zu cells, %zu pairs, %zu "

@@ -9,6 +9,7 @@
 #include "engine/core/parallel.h"
 #include "solver/lp/backends/fixed_chunks.h"
 #include "solver/lp/backends/pdlp_restarts.h"
+#include "solver/lp/backends/transpose_rows.h"
 
 namespace linesurf::solver {
 namespace {
@@ -42,22 +43,14 @@ struct SparseMatrix {
 };
 
 SparseMatrix Transpose(const SparseMatrix& a) {
+  CompressedRows<double> columns =
+      TransposeRows<double>(a.offsets, a.columns, a.values, a.num_cols);
   SparseMatrix t;
   t.num_rows = a.num_cols;
   t.num_cols = a.num_rows;
-  t.offsets.assign(a.num_cols + 1, 0);
-  for (std::uint32_t c : a.columns) ++t.offsets[c + 1];
-  for (std::size_t j = 0; j < a.num_cols; ++j) t.offsets[j + 1] += t.offsets[j];
-  t.columns.resize(a.columns.size());
-  t.values.resize(a.values.size());
-  std::vector<std::uint32_t> next(t.offsets.begin(), t.offsets.end() - 1);
-  for (std::size_t r = 0; r < a.num_rows; ++r) {
-    for (std::uint32_t k = a.offsets[r]; k < a.offsets[r + 1]; ++k) {
-      const std::uint32_t pos = next[a.columns[k]]++;
-      t.columns[pos] = static_cast<std::uint32_t>(r);
-      t.values[pos] = a.values[k];
-    }
-  }
+  t.offsets = std::move(columns.offsets);
+  t.columns = std::move(columns.index);
+  t.values = std::move(columns.value);
   return t;
 }
 

@@ -4,6 +4,7 @@
 #include "engine/core/parallel.h"
 #include "solver/lp/backends/fixed_chunks.h"
 #include "solver/lp/backends/pdlp_restarts.h"
+#include "solver/lp/backends/transpose_rows.h"
 
 #include <algorithm>
 #include <chrono>
@@ -77,20 +78,11 @@ SaddleProblem BuildSaddle(const ReducedEnergy& e) {
     p.AddRow(e.parity_constants[g], -e.parity_weights[g], e.parity_weights[g]);
   }
   p.num_rows = p.b.size();
-  // Transpose by counting sort.
-  p.col_offsets.assign(p.num_cols + 1, 0);
-  for (std::uint32_t c : p.row_columns) ++p.col_offsets[c + 1];
-  for (std::size_t j = 0; j < p.num_cols; ++j) p.col_offsets[j + 1] += p.col_offsets[j];
-  p.col_rows.resize(p.row_columns.size());
-  p.col_signs.resize(p.row_columns.size());
-  std::vector<std::uint32_t> next(p.col_offsets.begin(), p.col_offsets.end() - 1);
-  for (std::size_t r = 0; r < p.num_rows; ++r) {
-    for (std::uint32_t k = p.row_offsets[r]; k < p.row_offsets[r + 1]; ++k) {
-      const std::uint32_t pos = next[p.row_columns[k]]++;
-      p.col_rows[pos] = static_cast<std::uint32_t>(r);
-      p.col_signs[pos] = p.row_signs[k];
-    }
-  }
+  CompressedRows<std::int8_t> columns =
+      TransposeRows<std::int8_t>(p.row_offsets, p.row_columns, p.row_signs, p.num_cols);
+  p.col_offsets = std::move(columns.offsets);
+  p.col_rows = std::move(columns.index);
+  p.col_signs = std::move(columns.value);
   return p;
 }
 
@@ -195,11 +187,7 @@ class EnergyPdhg {
         if (tau_[j] == 0.0) {
           step.x[j] = z.x[j];
         } else {
-          double g = p_.unary[j];
-          for (std::uint32_t i = p_.col_offsets[j]; i < p_.col_offsets[j + 1]; ++i) {
-            g += p_.col_signs[i] * z.y[p_.col_rows[i]];
-          }
-          step.x[j] = std::clamp(z.x[j] - tau_[j] / weight * g, 0.0, 1.0);
+          step.x[j] = std::clamp(z.x[j] - tau_[j] / weight * ReducedCost(j, z.y), 0.0, 1.0);
         }
         extrapolated[j] = 2.0 * step.x[j] - z.x[j];
       }
@@ -222,6 +210,15 @@ class EnergyPdhg {
     });
   }
 
+  // (u + K^T y)_j: the primal gradient of column j, the reduced cost in the dual.
+  double ReducedCost(std::size_t j, const std::vector<double>& y) const {
+    double g = p_.unary[j];
+    for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
+      g += p_.col_signs[k] * y[p_.col_rows[k]];
+    }
+    return g;
+  }
+
   // D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j): a lower bound for any y in the box.
   double DualValue(const std::vector<double>& y) const {
     const double by = SumChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
@@ -231,13 +228,7 @@ class EnergyPdhg {
     });
     const double reduced = SumChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
       double s = 0.0;
-      for (std::size_t j = begin; j < end; ++j) {
-        double g = p_.unary[j];
-        for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
-          g += p_.col_signs[k] * y[p_.col_rows[k]];
-        }
-        s += std::min(0.0, g);
-      }
+      for (std::size_t j = begin; j < end; ++j) s += std::min(0.0, ReducedCost(j, y));
       return s;
     });
     return p_.constant + by + reduced;
