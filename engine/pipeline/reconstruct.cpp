@@ -286,6 +286,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
                            judgement.warnings.end());
 
     // On a surface the judgement accepted (not empty, not inverted); the pieces left are closed.
+    // The removal measures the surface: when it removes nothing, those are the final figures.
+    std::optional<SurfaceQuality> measured;
     if (options.remove_floating_fragments) {
       timer.Start("fragments");
       FragmentRemoval kept = ValueOrThrow(RemoveFloatingFragments(
@@ -293,6 +295,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       if (kept.removed_components > 0) {
         result.mesh = std::move(kept.mesh);
         topology = CheckIndexTopology(result.mesh);
+      } else {
+        measured = std::move(kept.quality);
       }
       stats.removed_fragments = kept.removed_components;
       stats.removed_fragment_volume = kept.removed_volume;
@@ -303,8 +307,12 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     // Figures without ground truth, in the local frame, on a surface the judgement accepted.
     if (options.measure_quality) {
       timer.Start("quality");
-      stats.quality = ValueOrThrow(MeasureSurfaceQuality(
-          result.mesh, scene, stats.epsilon.epsilon, options.quality, stage_ctx));
+      stats.quality = measured ? std::move(*measured)
+                               : ValueOrThrow(MeasureSurfaceQuality(result.mesh,
+                                                                    scene,
+                                                                    stats.epsilon.epsilon,
+                                                                    options.quality,
+                                                                    stage_ctx));
       stats.quality_measured = true;
       timer.Stop();
     }

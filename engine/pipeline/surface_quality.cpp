@@ -270,12 +270,12 @@ ComponentFigures Analyse(const PolygonMesh& mesh,
   return {std::move(q), index.face_component};
 }
 
-SurfaceQuality Measure(const PolygonMesh& mesh,
-                       const Scene& scene,
-                       double epsilon,
-                       const SurfaceQualityOptions& options,
-                       const RunContext& ctx) {
-  SurfaceQuality q = Analyse(mesh, scene, epsilon, options, ctx).quality;
+/// The figures as reported: components by decreasing |volume|, the counts over them, the planes
+/// on no face.
+SurfaceQuality Summarise(SurfaceQuality q,
+                         const PolygonMesh& mesh,
+                         const Scene& scene,
+                         double epsilon) {
   std::stable_sort(q.components.begin(),
                    q.components.end(),
                    [](const ComponentQuality& a, const ComponentQuality& b) {
@@ -291,6 +291,14 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
   return q;
 }
 
+SurfaceQuality Measure(const PolygonMesh& mesh,
+                       const Scene& scene,
+                       double epsilon,
+                       const SurfaceQualityOptions& options,
+                       const RunContext& ctx) {
+  return Summarise(Analyse(mesh, scene, epsilon, options, ctx).quality, mesh, scene, epsilon);
+}
+
 FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
                                 const Scene& scene,
                                 double epsilon,
@@ -304,6 +312,7 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
     return components[c].floating && components[c].volume > 0.0;
   };
   FragmentRemoval out;
+  out.quality = Summarise(figures.quality, mesh, scene, epsilon);
   // A surface of fragments only is left whole: what holds the most is not known to be noise.
   if (std::all_of(components.begin(), components.end(), [](const ComponentQuality& c) {
         return c.floating;

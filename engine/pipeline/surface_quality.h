@@ -57,6 +57,9 @@ struct FragmentRemoval {
   std::size_t removed_components = 0;
   double removed_volume = 0.0;  ///< sum of the removed components' volumes (each > 0)
   std::size_t removed_supported_segments = 0;
+  /// MeasureSurfaceQuality of the input mesh (measured on the way): the figures of `mesh` too
+  /// when nothing was removed.
+  SurfaceQuality quality;
 };
 
 /// @brief `mesh` without the solid components (positive volume) that MeasureSurfaceQuality calls

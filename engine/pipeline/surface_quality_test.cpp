@@ -199,6 +199,13 @@ TEST(RemoveFloatingFragments, DropsTheFragmentsAndKeepsTheRestAsItWas) {
   const SurfaceQuality q = Measure(r.mesh, scene);
   EXPECT_EQ(q.floating_fragments, 0u);
   EXPECT_EQ(q.components.size(), 1u);
+  // The figures of the input mesh, measured on the way, are MeasureSurfaceQuality's.
+  const SurfaceQuality before = Measure(mesh, scene);
+  EXPECT_EQ(r.quality.components.size(), before.components.size());
+  EXPECT_EQ(r.quality.floating_fragments, before.floating_fragments);
+  EXPECT_EQ(r.quality.data_fit, before.data_fit);
+  EXPECT_EQ(r.quality.visibility_consistency, before.visibility_consistency);
+  EXPECT_EQ(r.quality.largest_component_share, before.largest_component_share);
 }
 
 TEST(RemoveFloatingFragments, KeepsTheInnerShellOfAVoid) {
