@@ -127,7 +127,11 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
       {"scene_mode", [](ReconstructOptions& o) { o.scene_mode = SceneMode(7); }},
       {"engine", [](ReconstructOptions& o) { o.engine = ComplexEngine(3); }},
       {"block_size", [](ReconstructOptions& o) { o.block_size = -1.0; }},
-      {"block_size", [](ReconstructOptions& o) { o.block_size = 3.0; }},  // monolithic engine
+      {"block_size",
+       [](ReconstructOptions& o) {
+         o.engine = ComplexEngine::kMonolithic;
+         o.block_size = 3.0;
+       }},
       {"support_gap", [](ReconstructOptions& o) { o.detection.support_gap = -1.0; }},
       {"weights.open_seam", [](ReconstructOptions& o) { o.weights.open_seam = 1e7; }},
       {"block_margin", [](ReconstructOptions& o) { o.block_margin = 65; }},
@@ -163,7 +167,10 @@ TEST(FacadeOptions, BlockFieldsFollowTheEnginesRulesUnderTheFacadesNames) {
     EXPECT_FALSE(s.has_value());
     return s ? std::string() : s.error().ToString();
   };
-  EXPECT_EQ(message([](ReconstructOptions& o) { o.block_size = 3.0; }),
+  EXPECT_EQ(message([](ReconstructOptions& o) {
+              o.engine = ComplexEngine::kMonolithic;
+              o.block_size = 3.0;
+            }),
             "options: block_size applies to the blocks engine only (per-block detection: "
             "detection.block_size)");
   for (double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {

@@ -173,7 +173,7 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"structural_as_textural", Flag(&ReconstructOptions::structural_as_textural)},
       {"solver.time_limit_seconds", LINESURF_C_REAL(solver.time_limit_seconds)},
       {"block_size", LINESURF_C_REAL(block_size)},
-      {"block_margin", Integer(&ReconstructOptions::block_margin)},
+      {"block_margin", LINESURF_C_REAL(block_margin)},
       {"box_margin", LINESURF_C_REAL(box_margin)},
       {"measure_quality", Flag(&ReconstructOptions::measure_quality)},
       {"remove_floating_fragments", Flag(&ReconstructOptions::remove_floating_fragments)},

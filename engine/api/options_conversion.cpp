@@ -26,7 +26,7 @@ Status ValidateDetection(const DetectionParameters& detection) {
 
 /// The engine's own check of the block margin (partition::PlaneSupportOptions), named as the
 /// facade's.
-Status ValidateBlockMargin(int block_margin) {
+Status ValidateBlockMargin(double block_margin) {
   partition::PlaneSupportOptions o;
   o.margin_blocks = block_margin;
   const Status s = o.Validate();
@@ -42,7 +42,7 @@ pipeline::Engine ToEngine(ComplexEngine engine) {
 
 /// The engine's own checks of the block fields (pipeline::ValidateBlockSize, the block side
 /// against the engine, the block margin), named as the facade's.
-Status ValidateBlocks(ComplexEngine engine, double block_size, int block_margin) {
+Status ValidateBlocks(ComplexEngine engine, double block_size, double block_margin) {
   Status s = pipeline::ValidateBlockSize(block_size);
   if (s) {
     s = pipeline::ValidateEngineBlockSize(

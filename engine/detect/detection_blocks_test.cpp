@@ -122,8 +122,9 @@ TEST(AssignDetectionBlocks, OneWallAcrossTenBlocksIsOnePlane) {
 
   const BlockGrid grid = GridOf(scene.segments.raw(), 5.0);
   const std::vector<std::vector<SegmentId>> per_plane{inliers};
+  const std::vector<Plane3> planes{detected->planes[PlaneId(0u)]};
   const auto regions =
-      partition::ComputePlaneSupport(grid, scene.segments.raw(), per_plane, {}, {});
+      partition::ComputePlaneSupport(grid, scene.segments.raw(), planes, per_plane, {}, {});
   ASSERT_TRUE(regions) << regions.error().ToString();
   const auto region = regions->plane_blocks[PlaneId(0u)];
   EXPECT_EQ(region.size(), static_cast<std::size_t>(grid.NumBaseBlocks()));  // all 10 (1 x 10 x 1)

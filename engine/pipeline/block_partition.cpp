@@ -1,6 +1,7 @@
 #include "engine/pipeline/block_partition.h"
 
 #include "engine/core/exception.h"
+#include "partition/voxel/face_clearance.h"
 
 #include <chrono>
 #include <cmath>
@@ -60,7 +61,8 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
     if (stats.automatic_size) {
       stats.size_choice = ValueOrThrow(partition::ChooseBlockSize(
           scene.segments.raw(), box, options.size_rule, scene.memberships.raw()));
-      stats.block_size = stats.size_choice.block_size;
+      stats.block_size = partition::SizeClearOfParallelPlanes(
+          box, stats.size_choice.block_size, scene.planes.raw());
     }
     const partition::BlockGrid grid =
         ValueOrThrow(partition::BlockGrid::Create(box, stats.block_size));
@@ -69,8 +71,8 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
     for (const auto& list : inliers) stats.planes_without_inliers += list.empty() ? 1 : 0;
-    out.regions = ValueOrThrow(
-        partition::ComputePlaneSupport(grid, scene.segments.raw(), inliers, options.support, ctx));
+    out.regions = ValueOrThrow(partition::ComputePlaneSupport(
+        grid, scene.segments.raw(), scene.planes.raw(), inliers, options.support, ctx));
     stats.seconds_support =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

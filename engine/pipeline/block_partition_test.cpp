@@ -53,6 +53,7 @@ TEST(BuildBlockPartition, CubeFacesOnBlockFacesAreKeptAndTheComplexesAreValid) {
   const Scene scene = CubeScene();
   BlockPartitionOptions options;
   options.block_size = 1.0;  // faces at -1, 0, 1, 2, 3: the cube's planes lie on block faces
+  options.support.margin_blocks = 1.0;  // regions reach the blocks on both sides of a face
   const BlockPartition p = Build(scene, options);
   const Status ok = partition::ValidateBlockComplexes(p.complexes);
   EXPECT_TRUE(ok) << ok.error().ToString();

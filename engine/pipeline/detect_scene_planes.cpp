@@ -11,12 +11,13 @@ constexpr const char* kDetectScenePlanesStage = "detect_scene_planes";
 
 }  // namespace
 
-Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
-                                                const SanitizeOptions& sanitize,
-                                                const PlaneDetectionOptions& detect,
-                                                const RunContext& ctx,
-                                                StageTimer* timer,
-                                                const partition::BlockSizeRule* auto_blocks) noexcept {
+Expected<DetectedScene> SanitizeAndDetectPlanes(
+    Scene scene,
+    const SanitizeOptions& sanitize,
+    const PlaneDetectionOptions& detect,
+    const RunContext& ctx,
+    StageTimer* timer,
+    const partition::BlockSizeRule* auto_blocks) noexcept {
   return CatchAll(kDetectScenePlanesStage, [&]() -> DetectedScene {
     DetectedScene out;
     if (timer != nullptr) timer->Start("sanitize");
@@ -39,10 +40,14 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(Scene scene,
         box.Extend(s.p1);
         box.Extend(s.p2);
       }
-      const partition::BlockSizeChoice choice =
-          ValueOrThrow(partition::ChooseBlockSize(segments, box, *auto_blocks));
-      // One block is the whole scene: keep the monolithic detection (its exact result).
-      if (choice.halvings > 0) options.block_size = choice.block_size;
+      // A box flat on some axis (one segment, lines in one axis plane) has no block grid: the
+      // detection runs as one block.
+      if ((box.Extent().array() > 0.0).all()) {
+        const partition::BlockSizeChoice choice =
+            ValueOrThrow(partition::ChooseBlockSize(segments, box, *auto_blocks));
+        // One block is the whole scene: keep the monolithic detection (its exact result).
+        if (choice.halvings > 0) options.block_size = choice.block_size;
+      }
     }
     out.detection_block_size = options.block_size;
     PlaneDetectionResult detected = ValueOrThrow(DetectPlanes(out.scene, options, ctx));

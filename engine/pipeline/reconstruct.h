@@ -65,7 +65,7 @@ struct ReconstructOptions {
   solver::LabelingOptions solver;
   partition::CellComplexOptions complex;
   /// The complex: monolithic (default) or blocks.
-  Engine engine = Engine::kMonolithic;
+  Engine engine = Engine::kBlocks;
   /// Block size (0 = the size rule), size rule and support margin of the block engine's
   /// partition; its `complex` is replaced by `complex` above. A block size with the monolithic
   /// engine is an error (kInvalidOptions). Detection does not use it: its blocks are

@@ -1,16 +1,17 @@
 #include "partition/arrangement/build_cell_complex.h"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <sstream>
-#include <unordered_map>
-
-#include <tbb/parallel_for.h>
-
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "partition/arrangement/exact_predicates.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <sstream>
+#include <unordered_map>
 
 namespace linesurf::partition {
 namespace {
@@ -100,7 +101,8 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 std::uint32_t Builder::AddVertex(const std::array<std::uint32_t, 3>& def,
                                  std::vector<std::uint32_t> on) {
-  const VertexBounds b = ComputeVertexBounds(planes[def[0]], planes[def[1]], planes[def[2]], counter_);
+  const VertexBounds b =
+      ComputeVertexBounds(planes[def[0]], planes[def[1]], planes[def[2]], counter_);
   const auto id = static_cast<std::uint32_t>(vertex_def_.size());
   vertex_def_.push_back(def);
   vertex_lo_.push_back(b.lo);
@@ -113,16 +115,20 @@ std::uint32_t Builder::AddVertex(const std::array<std::uint32_t, 3>& def,
 }
 
 void Builder::InitBox(const Box3& box) {
-  planes = {Eigen::Vector4d(1, 0, 0, -box.min.x()), Eigen::Vector4d(0, 1, 0, -box.min.y()),
-            Eigen::Vector4d(0, 0, 1, -box.min.z()), Eigen::Vector4d(-1, 0, 0, box.max.x()),
-            Eigen::Vector4d(0, -1, 0, box.max.y()), Eigen::Vector4d(0, 0, -1, box.max.z())};
+  planes = {Eigen::Vector4d(1, 0, 0, -box.min.x()),
+            Eigen::Vector4d(0, 1, 0, -box.min.y()),
+            Eigen::Vector4d(0, 0, 1, -box.min.z()),
+            Eigen::Vector4d(-1, 0, 0, box.max.x()),
+            Eigen::Vector4d(0, -1, 0, box.max.y()),
+            Eigen::Vector4d(0, 0, -1, box.max.z())};
   for (std::uint32_t v = 0; v < 8; ++v) {
     const std::uint32_t ix = v & 1, iy = (v >> 1) & 1, iz = (v >> 2) & 1;
     std::array<std::uint32_t, 3> def{ix != 0 ? 3u : 0u, iy != 0 ? 4u : 1u, iz != 0 ? 5u : 2u};
     std::sort(def.begin(), def.end());
     AddVertex(def, {def.begin(), def.end()});
   }
-  facet_cycle_ = {{0, 2, 6, 4}, {0, 4, 5, 1}, {0, 1, 3, 2}, {1, 5, 7, 3}, {2, 3, 7, 6}, {4, 6, 7, 5}};
+  facet_cycle_ = {
+      {0, 2, 6, 4}, {0, 4, 5, 1}, {0, 1, 3, 2}, {1, 5, 7, 3}, {2, 3, 7, 6}, {4, 6, 7, 5}};
   for (std::uint32_t f = 0; f < 6; ++f) {
     facet_plane_.push_back(f);
     facet_pos_.push_back(0);
@@ -153,8 +159,11 @@ std::uint32_t Builder::EdgeVertex(std::uint32_t u, std::uint32_t v) {
   const auto it = edge_memo_.find(key);
   if (it != edge_memo_.end()) return it->second;
   std::vector<std::uint32_t> on;
-  std::set_intersection(vertex_on_[u].begin(), vertex_on_[u].end(), vertex_on_[v].begin(),
-                        vertex_on_[v].end(), std::back_inserter(on));
+  std::set_intersection(vertex_on_[u].begin(),
+                        vertex_on_[u].end(),
+                        vertex_on_[v].begin(),
+                        vertex_on_[v].end(),
+                        std::back_inserter(on));
   LINESURF_ASSERT(on.size() >= 2);
   const std::array<std::uint32_t, 3> def{on[0], on[1], pid_};
   on.push_back(pid_);
@@ -287,7 +296,8 @@ void Builder::SplitCell(std::uint32_t c) {
   std::uint32_t cur = ring.front().first;
   for (std::size_t k = 0; k < ring.size(); ++k) {
     cycle.push_back(cur);
-    const auto it = std::find_if(ring.begin(), ring.end(), [&](const auto& e) { return e.first == cur; });
+    const auto it =
+        std::find_if(ring.begin(), ring.end(), [&](const auto& e) { return e.first == cur; });
     LINESURF_ASSERT(it != ring.end());
     cur = it->second;
   }
@@ -403,17 +413,18 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
         for (std::size_t k = j + 1; k < on.size() && !found; ++k) {
           const std::array<std::uint32_t, 3> t{on[i], on[j], on[k]};
           if (t > best) break;
-          if (t == best ||
-              ExactSignDet3(planes[t[0]].head<3>(), planes[t[1]].head<3>(), planes[t[2]].head<3>(),
-                            counter_) != 0) {
+          if (t == best || ExactSignDet3(planes[t[0]].head<3>(),
+                                         planes[t[1]].head<3>(),
+                                         planes[t[2]].head<3>(),
+                                         counter_) != 0) {
             best = t;
             found = true;
           }
         }
       }
     }
-    cx.vertex_planes[VertexId(v)] = {ComplexPlaneId(best[0]), ComplexPlaneId(best[1]),
-                                     ComplexPlaneId(best[2])};
+    cx.vertex_planes[VertexId(v)] = {
+        ComplexPlaneId(best[0]), ComplexPlaneId(best[1]), ComplexPlaneId(best[2])};
   }
   // Facets.
   const std::size_t nfac = facet_cycle_.size();
@@ -445,7 +456,8 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
   std::vector<std::uint32_t> facet_edge_ids(facet_edge_keys.size());
   for (std::size_t i = 0; i < facet_edge_keys.size(); ++i) {
     const auto e = static_cast<std::uint32_t>(
-        std::lower_bound(edge_keys.begin(), edge_keys.end(), facet_edge_keys[i]) - edge_keys.begin());
+        std::lower_bound(edge_keys.begin(), edge_keys.end(), facet_edge_keys[i]) -
+        edge_keys.begin());
     facet_edge_ids[i] = e;
     ++incident_count[e + 1];
   }
@@ -453,7 +465,8 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     std::size_t k = 0;
     for (std::size_t f = 0; f < nfac; ++f) {
       std::vector<EdgeId> row;
-      for (std::size_t i = 0; i < facet_cycle_[f].size(); ++i) row.emplace_back(facet_edge_ids[k++]);
+      for (std::size_t i = 0; i < facet_cycle_[f].size(); ++i)
+        row.emplace_back(facet_edge_ids[k++]);
       cx.facet_edges.AddRow(row);
     }
   }
@@ -523,8 +536,10 @@ bool IsUsablePlane(const Plane3& plane) {
          std::isfinite(plane.Offset());
 }
 
-CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
-                           const CellComplexOptions& options, const RunContext& ctx) {
+CellComplexResult BuildOne(const Box3& box,
+                           std::span<const Plane3> input,
+                           const CellComplexOptions& options,
+                           const RunContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   LINESURF_THROW_IF(box.IsEmpty() || !box.min.allFinite() || !box.max.allFinite() ||
                         !(box.min.array() < box.max.array()).all(),
@@ -546,7 +561,8 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
   }
   std::array<Vec3, 8> corners;
   for (int v = 0; v < 8; ++v) {
-    corners[v] = Vec3((v & 1) != 0 ? box.max.x() : box.min.x(), (v & 2) != 0 ? box.max.y() : box.min.y(),
+    corners[v] = Vec3((v & 1) != 0 ? box.max.x() : box.min.x(),
+                      (v & 2) != 0 ? box.max.y() : box.min.y(),
                       (v & 4) != 0 ? box.max.z() : box.min.z());
   }
   std::vector<PlaneId> sources;
@@ -555,8 +571,8 @@ CellComplexResult BuildOne(const Box3& box, std::span<const Plane3> input,
       ++stats.planes_invalid;
       continue;
     }
-    const Eigen::Vector4d p(input[i].normal.x(), input[i].normal.y(), input[i].normal.z(),
-                            input[i].Offset());
+    const Eigen::Vector4d p(
+        input[i].normal.x(), input[i].normal.y(), input[i].normal.z(), input[i].Offset());
     int num_pos = 0, num_neg = 0;
     for (const Vec3& corner : corners) {
       const int s = ExactSignAtPoint(p, corner, &counter);
@@ -619,7 +635,8 @@ Status CellComplexOptions::Validate() const {
   return {};
 }
 
-Expected<CellComplexResult> BuildCellComplex(const Box3& box, std::span<const Plane3> planes,
+Expected<CellComplexResult> BuildCellComplex(const Box3& box,
+                                             std::span<const Plane3> planes,
                                              const CellComplexOptions& options,
                                              const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
@@ -627,8 +644,10 @@ Expected<CellComplexResult> BuildCellComplex(const Box3& box, std::span<const Pl
 }
 
 Expected<std::vector<CellComplexResult>> BuildCellComplexes(
-    std::span<const Box3> boxes, std::span<const std::vector<Plane3>> planes_per_box,
-    const CellComplexOptions& options, const RunContext& ctx) noexcept {
+    std::span<const Box3> boxes,
+    std::span<const std::vector<Plane3>> planes_per_box,
+    const CellComplexOptions& options,
+    const RunContext& ctx) noexcept {
   if (Status ok = options.Validate(); !ok) return ok.error();
   if (planes_per_box.size() != boxes.size()) {
     return Error{
@@ -636,6 +655,8 @@ Expected<std::vector<CellComplexResult>> BuildCellComplexes(
   }
   return CatchAll(kBuildCellComplexStage, [&] {
     std::vector<Expected<CellComplexResult>> results(boxes.size(), Error{});
+    std::size_t finished = 0;
+    std::mutex progress_mutex;  // count and report together, so fractions only grow
     RunInArena(ctx, [&] {
       tbb::parallel_for(std::size_t{0}, boxes.size(), [&](std::size_t b) {
         if (ctx.ShouldStop()) {
@@ -643,10 +664,15 @@ Expected<std::vector<CellComplexResult>> BuildCellComplexes(
           return;
         }
         results[b] = CatchAll(kBuildCellComplexStage, [&] {
-          RunContext quiet;  // per-box builds report no progress of their own
+          RunContext quiet;
           quiet.is_cancelled = [&ctx] { return ctx.ShouldStop(); };
           return BuildOne(boxes[b], planes_per_box[b], options, quiet);
         });
+        // Progress by boxes finished: the builds themselves report nothing.
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        ++finished;
+        ctx.ReportProgress(kBuildCellComplexStage,
+                           static_cast<double>(finished) / static_cast<double>(boxes.size()));
       });
     });
     std::vector<CellComplexResult> out;

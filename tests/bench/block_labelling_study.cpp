@@ -305,7 +305,7 @@ int SceneStudy(const char* path,
 int EngineStudy(const char* path,
                 const std::string& planes,
                 double block_size,
-                int margin,
+                double margin,
                 int threads,
                 const std::string& variants) {
   const auto start = std::chrono::steady_clock::now();
@@ -334,7 +334,7 @@ int EngineStudy(const char* path,
       partition::BlockOfEachCell(prepared.blocks->complexes);
   const std::string name = "engine " + planes;
   std::printf(
-      "%s: %zu planes, block size %.3f, margin %d, %zu blocks, %zu cells, %zu pairs, %zu "
+      "%s: %zu planes, block size %.3f, margin %g, %zu blocks, %zu cells, %zu pairs, %zu "
       "structural, %zu parity; prepare %.1f s, evidence %.1f s, threads %d\n\n",
       name.c_str(),
       prepared.scene.planes.size(),
@@ -388,7 +388,7 @@ int main(int argc, char** argv) {
     return linesurf::EngineStudy(argv[2],
                                  argv[3],
                                  std::atof(argv[4]),
-                                 std::atoi(argv[5]),
+                                 std::atof(argv[5]),
                                  std::atoi(argv[6]),
                                  arg(7, "auto"));
   }

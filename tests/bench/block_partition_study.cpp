@@ -88,7 +88,7 @@ int Run(const std::string& path,
     for (const double size : sizes) {
       pipeline::BlockPartitionOptions options;
       options.block_size = size;
-      options.support.margin_blocks = static_cast<int>(margin);
+      options.support.margin_blocks = margin;
       const double cpu = CpuSeconds();
       Expected<pipeline::BlockPartition> p =
           pipeline::BuildBlockPartition(scene, box, options, ctx);
@@ -101,7 +101,7 @@ int Run(const std::string& path,
       const char* valid = "-";
       if (validate) valid = partition::ValidateBlockComplexes(p->complexes) ? "yes" : "NO";
       std::printf(
-          "| %.3g%s | %d | %zu | %zu | %zu | %zu | %zu | %.2f | %.2f | %.2f | %s | %.0f |\n",
+          "| %.3g%s | %g | %zu | %zu | %zu | %zu | %zu | %.2f | %.2f | %.2f | %s | %.0f |\n",
           p->stats.block_size,
           p->stats.automatic_size ? " (auto)" : "",
           options.support.margin_blocks,

@@ -76,7 +76,7 @@ int Run(const std::string& dir,
     for (const double size : sizes) {
       pipeline::BlockPartitionOptions options;
       options.block_size = size;
-      options.support.margin_blocks = static_cast<int>(margin);
+      options.support.margin_blocks = margin;
       Expected<pipeline::BlockPartition> p =
           pipeline::BuildBlockPartition(scene, box, options, RunContext{});
       if (!p) {
@@ -113,7 +113,7 @@ int Run(const std::string& dir,
         return 1;
       }
       std::printf(
-          "| %.3g | %d | %zu | %zu | %zu | %zu (%zu) | %zu | %zu | %zu | %.2f | %.2f | %s | %s | "
+          "| %.3g | %g | %zu | %zu | %zu | %zu (%zu) | %zu | %zu | %zu | %.2f | %.2f | %s | %s | "
           "%s | %.9f |\n",
           p->stats.block_size,
           options.support.margin_blocks,

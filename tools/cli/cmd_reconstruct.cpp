@@ -234,7 +234,7 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
       ->check(AtLeast(0.0));
   r.Add("block-margin",
         o.block_margin,
-        "Blocks a plane's support region is dilated by (--engine blocks)")
+        "Blocks a plane's support region is dilated by, fractions allowed (--engine blocks)")
       ->check(Between(0.0, 64.0));
   r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
   r.Add("seed", o.seed, "Random seed");

@@ -148,7 +148,9 @@ void BindOptions(py::module_& m) {
                      &ComplexEngineFromName,
                      "cell complex: 'monolithic' or 'blocks'")
           .Field("block_size", &R::block_size, "blocks engine: base block side (0 = automatic)")
-          .Field("block_margin", &R::block_margin, "blocks a plane's support is dilated by [0, 64]")
+          .Field("block_margin",
+                 &R::block_margin,
+                 "blocks a plane's support is dilated by [0, 64], fractions allowed")
           .Field("box_margin", &R::box_margin, "box growth, fraction of its extent (0, 10]")
           .Field("measure_quality", &R::measure_quality, "quality figures in the report")
           .Field("remove_floating_fragments",

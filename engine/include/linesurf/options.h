@@ -164,13 +164,14 @@ struct ReconstructOptions {
   /// Ablation: structural segments count as two textural ones.
   bool structural_as_textural = false;
   SolverOptions solver;
-  ComplexEngine engine = ComplexEngine::kMonolithic;
+  ComplexEngine engine = ComplexEngine::kBlocks;
   /// ComplexEngine::kBlocks: side of the base blocks, scene units (>= 0; 0 = the size rule).
   /// Must be 0 with the monolithic engine. Detection keeps its own blocks
   /// (DetectionParameters::block_size).
   double block_size = 0.0;
-  /// Blocks a plane's support region is dilated by (ComplexEngine::kBlocks; [0, 64]).
-  int block_margin = 1;
+  /// Blocks a plane's support region is dilated by (ComplexEngine::kBlocks; [0, 64]); a fraction
+  /// reaches the neighbouring blocks that an inlier comes within that share of a block of.
+  double block_margin = 0.0;
   /// The box is the bounding box of segments and viewpoints grown on each side by this fraction
   /// of its extent ((0, 10]; 0.05 as the reference, so viewpoints lie in bounded cells).
   double box_margin = 0.05;
