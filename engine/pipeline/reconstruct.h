@@ -64,7 +64,7 @@ struct ReconstructOptions {
   EnergyOptions energy;
   solver::LabelingOptions solver;
   partition::CellComplexOptions complex;
-  /// The complex: monolithic (default) or blocks.
+  /// The complex: blocks (default) or monolithic.
   Engine engine = Engine::kBlocks;
   /// Block size (0 = the size rule), size rule and support margin of the block engine's
   /// partition; its `complex` is replaced by `complex` above. A block size with the monolithic

@@ -164,6 +164,7 @@ struct ReconstructOptions {
   /// Ablation: structural segments count as two textural ones.
   bool structural_as_textural = false;
   SolverOptions solver;
+  /// The cell complex: per-block arrangements (default) or one of the scene box.
   ComplexEngine engine = ComplexEngine::kBlocks;
   /// ComplexEngine::kBlocks: side of the base blocks, scene units (>= 0; 0 = the size rule).
   /// Must be 0 with the monolithic engine. Detection keeps its own blocks
