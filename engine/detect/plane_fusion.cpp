@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <set>
+#include <span>
 #include <tuple>
 
 #include "engine/detect/segment_geometry.h"
@@ -43,6 +44,33 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
   return out;
 }
 
+/// Whether some point of `box` lies within `tolerance` of `plane` (with a relative slack for
+/// rounding). Both segment distances (mean and max of the endpoints') are at least the smallest
+/// distance over the box, so no inlier of a box that misses the slab is within `tolerance`.
+bool BoxMeetsSlab(const Box3& box, const Plane3& plane, double tolerance) {
+  const double centre = plane.SignedDistance(box.Center());
+  const double reach = plane.normal.cwiseAbs().dot(0.5 * box.Extent());
+  const double slack = 1e-9 * (std::abs(centre) + reach + tolerance);
+  return std::abs(centre) - reach <= tolerance + slack;
+}
+
+/// The segments of the two supports that may lie within `tolerance` of both planes, held in
+/// `storage` when it takes a union: the inliers of a node whose box misses the other plane's
+/// slab cannot (the ground against a roof: its support of the whole city is skipped without a
+/// look at its segments).
+std::span<const SegmentId> SharedCandidates(const FusionNode& a, const FusionNode& b,
+                                            double tolerance, std::vector<SegmentId>& storage) {
+  const bool a_near_b = BoxMeetsSlab(a.box, b.data.plane, tolerance);
+  const bool b_near_a = BoxMeetsSlab(b.box, a.data.plane, tolerance);
+  if (a_near_b && b_near_a) {
+    storage = UnionOf(a.data.inliers, b.data.inliers);
+    return storage;
+  }
+  if (a_near_b) return a.data.inliers;
+  if (b_near_a) return b.data.inliers;
+  return {};
+}
+
 /// Angle of a mergeable pair, or a negative value when the pair does not qualify.
 double PairAngle(std::span<const Segment3> segments, const FusionParameters& params,
                  const FusionNode& node_a, const FusionNode& node_b) {
@@ -54,7 +82,8 @@ double PairAngle(std::span<const Segment3> segments, const FusionParameters& par
   const std::size_t smaller = std::min(a.inliers.size(), b.inliers.size());
   const double needed = params.min_shared_fraction * static_cast<double>(smaller);
   std::size_t shared = 0;
-  for (const SegmentId s : UnionOf(a.inliers, b.inliers)) {
+  std::vector<SegmentId> storage;
+  for (const SegmentId s : SharedCandidates(node_a, node_b, params.epsilon, storage)) {
     const Segment3& seg = segments[s.index()];
     if (SegmentPlaneDistance(seg, a.plane, params.distance) <= params.epsilon &&
         SegmentPlaneDistance(seg, b.plane, params.distance) <= params.epsilon) {
