@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <limits>
 
 namespace linesurf {
@@ -43,6 +44,14 @@ struct Box3 {
     return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
   }
 };
+
+/// Whether the box of `center` and `half_extent` comes within `half_thickness` of the plane:
+/// no point of a box that fails it lies closer, so neither does any segment inside it.
+inline bool BoxMeetsSlab(const Vec3& center, const Vec3& half_extent, const Plane3& plane,
+                         double half_thickness) {
+  return std::abs(plane.SignedDistance(center)) <=
+         plane.normal.cwiseAbs().dot(half_extent) + half_thickness;
+}
 
 /// Rigid transform restricted to a translation: world = local + translation. Recentring is all
 /// linesurf needs (georeferenced inputs sit 1e6 m from the origin).

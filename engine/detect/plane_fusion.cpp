@@ -44,14 +44,13 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
   return out;
 }
 
-/// Whether some point of `box` lies within `tolerance` of `plane` (with a relative slack for
-/// rounding). Both segment distances (mean and max of the endpoints') are at least the smallest
-/// distance over the box, so no inlier of a box that misses the slab is within `tolerance`.
+/// Whether some point of the inliers' box lies within `tolerance` of `plane`, with a relative
+/// slack for rounding. Both segment distances (mean and max of the endpoints') are at least the
+/// smallest distance over the box, so no inlier of a box that misses the slab is within it.
 bool BoxMeetsSlab(const Box3& box, const Plane3& plane, double tolerance) {
-  const double centre = plane.SignedDistance(box.Center());
-  const double reach = plane.normal.cwiseAbs().dot(0.5 * box.Extent());
-  const double slack = 1e-9 * (std::abs(centre) + reach + tolerance);
-  return std::abs(centre) - reach <= tolerance + slack;
+  const double slack =
+      1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + plane.point.norm());
+  return BoxMeetsSlab(box.Center(), 0.5 * box.Extent(), plane, tolerance + slack);
 }
 
 /// The segments of the two supports that may lie within `tolerance` of both planes, held in

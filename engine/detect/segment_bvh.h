@@ -44,14 +44,12 @@ class SegmentBvh {
 template <typename Fn>
 void SegmentBvh::ForEachInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const {
   if (nodes_.empty()) return;
-  const Vec3 abs_normal = plane.normal.cwiseAbs();
   std::uint32_t stack[128];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
-    const double reach = abs_normal.dot(node.half_extent) + half_thickness;
-    if (std::abs(plane.SignedDistance(node.center)) > reach) continue;
+    if (!BoxMeetsSlab(node.center, node.half_extent, plane, half_thickness)) continue;
     if (node.leaf) {
       for (std::uint32_t i = node.begin; i < node.end; ++i) fn(order_[i]);
     } else {

@@ -1,7 +1,9 @@
 #include "partition/voxel/face_clearance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -34,10 +36,9 @@ std::pair<double, double> NarrowRange(const Plane3& plane,
   return {lo, hi};
 }
 
-bool FacesClear(const Box3& box,
-                double size,
-                const std::vector<std::pair<double, double>> (&ranges)[3],
-                double margin) {
+using AxisRanges = std::array<std::vector<std::pair<double, double>>, 3>;
+
+bool FacesClear(const Box3& box, double size, const AxisRanges& ranges, double margin) {
   for (int a = 0; a < 3; ++a) {
     const double extent = box.max[a] - box.min[a];
     const int blocks = std::max(1, static_cast<int>(std::ceil(extent / size)));
@@ -57,7 +58,7 @@ double SizeClearOfParallelPlanes(const Box3& box,
                                  double size,
                                  std::span<const Plane3> planes,
                                  double clearance) {
-  std::vector<std::pair<double, double>> ranges[3];
+  AxisRanges ranges;
   const double width = clearance * size;
   for (const Plane3& plane : planes) {
     for (int a = 0; a < 3; ++a) {

@@ -21,23 +21,30 @@ std::pair<Vec3, Vec3> PlaneBasis(const Vec3& normal) {
   return {u, n.cross(u)};
 }
 
-// Whether the projections of the polygon and the box on `axis` are apart by more than `tol`.
-bool Separates(const Vec3& axis,
-               std::span<const Vec3> polygon,
-               const Vec3& centre,
-               const Vec3& half,
-               double tol) {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
+// A separating-axis candidate with the polygon's projection on it.
+struct Axis {
+  Vec3 direction;
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
+Axis ProjectPolygon(const Vec3& direction, std::span<const Vec3> polygon) {
+  Axis axis{
+      direction, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (const Vec3& p : polygon) {
-    const double x = axis.dot(p);
-    lo = std::min(lo, x);
-    hi = std::max(hi, x);
+    const double x = direction.dot(p);
+    axis.lo = std::min(axis.lo, x);
+    axis.hi = std::max(axis.hi, x);
   }
-  const double c = axis.dot(centre);
-  const double r = half.dot(axis.cwiseAbs());
-  const double slack = tol * axis.norm();
-  return lo > c + r + slack || hi < c - r - slack;
+  return axis;
+}
+
+// Whether the polygon's and the box's projections on `axis` are apart by more than `tol`.
+bool Separates(const Axis& axis, const Vec3& centre, const Vec3& half, double tol) {
+  const double c = axis.direction.dot(centre);
+  const double r = half.dot(axis.direction.cwiseAbs());
+  const double slack = tol * axis.direction.norm();
+  return axis.lo > c + r + slack || axis.hi < c - r - slack;
 }
 
 }  // namespace
@@ -71,15 +78,20 @@ std::vector<std::int64_t> BlocksMetByConvexPolygon(const BlockGrid& grid,
   const double tol = 1e-9 * grid.block_size();
   const Eigen::Vector3i first = grid.Locate(bounds.min - Vec3::Constant(tol));
   const Eigen::Vector3i last = grid.Locate(bounds.max + Vec3::Constant(tol));
-  // Separating axes: the box's, the polygon's normal, and its edges x the box's.
-  std::vector<Vec3> axes{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+  // Separating axes: the box's, the polygon's normal, and its edges x the box's; the polygon is
+  // projected on each once.
+  std::vector<Vec3> directions{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
   Vec3 normal = Vec3::Zero();
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Vec3 edge = polygon[(i + 1) % polygon.size()] - polygon[i];
     normal += (polygon[i] - polygon[0]).cross(edge);
-    for (int a = 0; a < 3; ++a) axes.push_back(edge.cross(Vec3::Unit(a)));
+    for (int a = 0; a < 3; ++a) directions.push_back(edge.cross(Vec3::Unit(a)));
   }
-  axes.push_back(normal);
+  directions.push_back(normal);
+  std::vector<Axis> axes;
+  for (const Vec3& d : directions) {
+    if (d.squaredNorm() > 0.0) axes.push_back(ProjectPolygon(d, polygon));
+  }
   for (int z = first.z(); z <= last.z(); ++z) {
     for (int y = first.y(); y <= last.y(); ++y) {
       for (int x = first.x(); x <= last.x(); ++x) {
@@ -87,8 +99,8 @@ std::vector<std::int64_t> BlocksMetByConvexPolygon(const BlockGrid& grid,
         const Box3 box = grid.BlockBox({0, base});
         const Vec3 centre = box.Center();
         const Vec3 half = 0.5 * box.Extent();
-        const bool apart = std::any_of(axes.begin(), axes.end(), [&](const Vec3& axis) {
-          return axis.squaredNorm() > 0.0 && Separates(axis, polygon, centre, half, tol);
+        const bool apart = std::any_of(axes.begin(), axes.end(), [&](const Axis& axis) {
+          return Separates(axis, centre, half, tol);
         });
         if (!apart) out.push_back(grid.LinearIndex(base));
       }
