@@ -1,29 +1,30 @@
 #include "engine/detect/detect_planes.h"
-#include "engine/detect/estimate_epsilon.h"
-#include "engine/detect/support_clusters.h"
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
-#include <Eigen/Eigenvalues>
-#include <algorithm>
-#include <array>
-#include <atomic>
-#include <chrono>
-#include <cmath>
-#include <numbers>
-#include <optional>
-#include <sstream>
-#include <tuple>
 
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
 #include "engine/detect/collinear_groups.h"
 #include "engine/detect/detection_blocks.h"
+#include "engine/detect/estimate_epsilon.h"
 #include "engine/detect/plane_fusion.h"
 #include "engine/detect/segment_bvh.h"
 #include "engine/detect/segment_geometry.h"
+#include "engine/detect/support_clusters.h"
+
+#include <Eigen/Eigenvalues>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <tuple>
 
 namespace linesurf {
 
@@ -539,20 +540,31 @@ partition::BlockGrid DetectionGrid(std::span<const Segment3> lines, double block
   return std::move(grid).value();
 }
 
-/// The blocks of per-block detection; one block holding every line when block_size is 0.
-std::vector<DetectionBlock> SplitIntoBlocks(std::span<const Segment3> lines,
-                                            const PlaneDetectionOptions& options) {
+/// The blocks of per-block detection and their grid; one block holding every line and no grid
+/// when block_size is 0.
+struct DetectionLayout {
+  std::optional<partition::BlockGrid> grid;
+  std::vector<DetectionBlock> blocks;
+};
+
+DetectionLayout SplitIntoBlocks(std::span<const Segment3> lines,
+                                const PlaneDetectionOptions& options) {
+  DetectionLayout layout;
   if (options.block_size > 0.0) {
-    if (lines.empty()) return {};
-    BlockLayout layout;
-    layout.halo = options.block_halo;
-    layout.max_home_segments = static_cast<std::size_t>(options.block_max_segments);
-    return AssignDetectionBlocks(lines, DetectionGrid(lines, options.block_size), layout);
+    if (lines.empty()) return layout;
+    layout.grid = DetectionGrid(lines, options.block_size);
+    BlockLayout block_layout;
+    block_layout.halo = options.block_halo;
+    block_layout.max_home_segments = static_cast<std::size_t>(options.block_max_segments);
+    layout.blocks = AssignDetectionBlocks(lines, *layout.grid, block_layout);
+    return layout;
   }
   DetectionBlock all;
   all.segments.reserve(lines.size());
   for (std::size_t i = 0; i < lines.size(); ++i) all.segments.emplace_back(i);
-  return {std::move(all)};
+  all.home_segments = all.segments;
+  layout.blocks.push_back(std::move(all));
+  return layout;
 }
 
 /// Replaces every plane's inlier lines by their member segments (ascending).
@@ -568,44 +580,115 @@ void ExpandToSegments(const CollinearGroups& groups, std::vector<SupportedPlane>
   }
 }
 
-/// Runs the RANSAC of every block (blocks in parallel, each deterministic) and returns their
-/// planes in block order, inliers as scene segment ids. A single block keeps options.seed, so
-/// it reproduces the monolithic method exactly; block b of several draws from its own stream.
-std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
-                                           const std::vector<DetectionBlock>& blocks,
-                                           const PlaneDetectionOptions& options, double epsilon,
-                                           const RunContext& ctx, PlaneDetectionStats& stats) {
-  const bool single = blocks.size() == 1;
-  std::vector<std::vector<SupportedPlane>> found(blocks.size());
-  std::vector<PlaneDetectionStats> block_stats(blocks.size());
-  std::atomic<std::size_t> done{0};
-  tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
-    const std::vector<SegmentId>& ids = blocks[b].segments;
-    // A single block holds every line in order: it works on `lines` itself, without a copy.
-    std::vector<Segment3> local;
-    if (!single) {
-      local.reserve(ids.size());
-      for (const SegmentId id : ids) local.push_back(lines[id.index()]);
-    }
-    const std::uint64_t seed =
-        single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, b);
-    Detector detector(single ? lines : std::span<const Segment3>(local), options, epsilon, seed,
-                      single, ctx);
-    detector.ExtractAll(block_stats[b]);
-    found[b] = std::move(detector.planes());
-    for (SupportedPlane& plane : found[b]) {
-      for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
-    }
-    ctx.ReportProgress(kDetectPlanesStage,
-                       static_cast<double>(++done) / static_cast<double>(blocks.size()));
-  });
+/// Whether a block whose RANSAC reached max_planes is replaced by its 8 children: it lies on a
+/// grid below the deepest level and holds more home lines than max_planes planes of min_support
+/// lines of its own need (a smaller block reached the cap on shared or halo lines, which halving
+/// would not cure; the bound also ends the recursion).
+bool SplitAtCap(const DetectionBlock& block,
+                const DetectionLayout& layout,
+                const PlaneDetectionOptions& options) {
+  const std::size_t lines_for_cap =
+      static_cast<std::size_t>(options.max_planes) * static_cast<std::size_t>(options.min_support);
+  return layout.grid.has_value() && block.key.level < partition::kMaxBlockLevel &&
+         block.home_segments.size() > lines_for_cap;
+}
+
+/// One block's RANSAC, or its replacement by children when it reached max_planes (SplitAtCap).
+struct BlockRun {
+  DetectionBlock block;
+  double progress_share = 0.0;  ///< of the whole detection, handed on to its children
   std::vector<SupportedPlane> planes;
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    stats.candidates_evaluated += block_stats[b].candidates_evaluated;
-    stats.failed_draws += block_stats[b].failed_draws;
-    stats.capped_blocks += block_stats[b].capped_blocks;
-    for (SupportedPlane& plane : found[b]) planes.push_back(std::move(plane));
+  PlaneDetectionStats stats;
+  std::vector<DetectionBlock> children;  ///< set when the block is split
+  std::vector<std::size_t> child_runs;   ///< indices of the children's runs
+};
+
+/// Runs the RANSAC of every block (blocks in parallel, each deterministic) and returns their
+/// planes in block order, inliers as scene segment ids. A block that reached max_planes is
+/// replaced by its children (SplitAtCap), run in the next round; they take its place in the
+/// order. A single block keeps options.seed, so it reproduces the monolithic method exactly; the
+/// run r of several (blocks first, then children in order of creation) draws from its own stream.
+std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
+                                           const DetectionLayout& layout,
+                                           const PlaneDetectionOptions& options,
+                                           double epsilon,
+                                           const RunContext& ctx,
+                                           PlaneDetectionStats& stats) {
+  const bool one_block = layout.blocks.size() == 1;
+  // Without a grid nothing splits: the RANSAC's own progress (planes / max_planes) is the
+  // detection's.
+  const bool plane_progress = !layout.grid.has_value();
+  std::vector<BlockRun> runs;
+  const auto add_run = [&runs](DetectionBlock block, double progress_share) {
+    BlockRun& run = runs.emplace_back();
+    run.block = std::move(block);
+    run.progress_share = progress_share;
+    return runs.size() - 1;
+  };
+  std::vector<std::size_t> round;
+  for (const DetectionBlock& block : layout.blocks) {
+    round.push_back(add_run(block, 1.0 / static_cast<double>(layout.blocks.size())));
   }
+  std::mutex progress_mutex;
+  double progress = 0.0;
+  while (!round.empty()) {
+    tbb::parallel_for(std::size_t{0}, round.size(), [&](std::size_t i) {
+      const std::size_t r = round[i];
+      BlockRun& run = runs[r];
+      const std::vector<SegmentId>& ids = run.block.segments;
+      // A single block holds every line in order: it works on `lines` itself, without a copy.
+      const bool single = one_block && r == 0;
+      std::vector<Segment3> local;
+      if (!single) {
+        local.reserve(ids.size());
+        for (const SegmentId id : ids) local.push_back(lines[id.index()]);
+      }
+      const std::uint64_t seed =
+          single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, r);
+      Detector detector(single ? lines : std::span<const Segment3>(local),
+                        options,
+                        epsilon,
+                        seed,
+                        plane_progress,
+                        ctx);
+      detector.ExtractAll(run.stats);
+      if (run.stats.capped_blocks > 0 && SplitAtCap(run.block, layout, options)) {
+        run.children = SplitDetectionBlock(lines, *layout.grid, run.block, options.block_halo);
+        run.stats.capped_blocks = 0;
+        return;
+      }
+      run.planes = std::move(detector.planes());
+      for (SupportedPlane& plane : run.planes) {
+        for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
+      }
+      const std::lock_guard lock(progress_mutex);
+      progress += run.progress_share;
+      ctx.ReportProgress(kDetectPlanesStage, std::min(progress, 1.0));
+    });
+    std::vector<std::size_t> next;
+    for (const std::size_t r : round) {
+      std::vector<DetectionBlock> children = std::move(runs[r].children);
+      const double share = runs[r].progress_share / static_cast<double>(children.size());
+      for (DetectionBlock& child : children) {
+        const std::size_t c = add_run(std::move(child), share);
+        runs[r].child_runs.push_back(c);
+        next.push_back(c);
+      }
+    }
+    round = std::move(next);
+  }
+  std::vector<SupportedPlane> planes;
+  const auto collect = [&](const auto& self, std::size_t r) -> void {
+    BlockRun& run = runs[r];
+    stats.candidates_evaluated += run.stats.candidates_evaluated;
+    stats.failed_draws += run.stats.failed_draws;
+    for (const std::size_t child : run.child_runs) self(self, child);
+    if (!run.child_runs.empty()) return;
+    ++stats.blocks;
+    stats.capped_blocks += run.stats.capped_blocks;
+    for (SupportedPlane& plane : run.planes) planes.push_back(std::move(plane));
+  };
+  for (std::size_t r = 0; r < layout.blocks.size(); ++r) collect(collect, r);
   return planes;
 }
 
@@ -642,12 +725,11 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     const detect::CollinearGroups groups = detect::LinesToDetect(scene, options, epsilon);
     const std::span<const Segment3> lines = groups.lines;
     result.stats.lines = static_cast<std::int64_t>(lines.size());
-    const std::vector<detect::DetectionBlock> blocks = detect::SplitIntoBlocks(lines, options);
+    const detect::DetectionLayout layout = detect::SplitIntoBlocks(lines, options);
     std::vector<detect::SupportedPlane> planes;
     RunInArena(ctx, [&] {
-      planes = detect::DetectInBlocks(lines, blocks, options, epsilon, ctx, result.stats);
+      planes = detect::DetectInBlocks(lines, layout, options, epsilon, ctx, result.stats);
     });
-    result.stats.blocks = static_cast<std::int64_t>(blocks.size());
     result.stats.planes_before_fusion = static_cast<std::int32_t>(planes.size());
     const auto fusion_start = std::chrono::steady_clock::now();
     detect::FusionParameters fusion;
@@ -656,7 +738,7 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     fusion.max_angle_rad = DegToRad(options.theta_fusion_deg);
     fusion.min_shared_fraction = options.p_fusion;
     fusion.distance = options.distance;
-    const bool several_blocks = blocks.size() > 1;
+    const bool several_blocks = result.stats.blocks > 1;
     if (several_blocks) fusion.max_gap = options.block_halo * options.block_size;
     result.stats.merges = detect::FusePlanes(lines, fusion, planes);
     if (several_blocks) {

@@ -101,7 +101,8 @@ struct PlaneDetectionOptions {
   /// (scene units); RANSAC runs per cube on the segments whose midpoint lies in the cube dilated
   /// by the halo, cubes in parallel, then a global fusion merges the pieces of one plane found
   /// in neighbouring cubes and re-applies the at-most-2 rule. Work grows about linearly with the
-  /// scene; `max_planes` then bounds each block's RANSAC, not the total (a city has thousands).
+  /// scene; `max_planes` then bounds each block's RANSAC, not the total (a city has thousands),
+  /// and a block whose RANSAC reaches it is split into 8 (docs/plane_detection.md).
   /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
   /// gives exactly the monolithic result.
   double block_size = 0.0;
@@ -137,11 +138,12 @@ struct PlaneDetectionStats {
   std::int64_t failed_draws = 0;
   /// Distinct lines detected on (segments after merging collinear duplicates).
   std::int64_t lines = 0;
-  /// Blocks detected (1 without per-block detection) and memberships dropped by the at-most-2
-  /// rule after merging the blocks' planes.
+  /// Blocks detected (1 without per-block detection; a block split at the cap counts as its
+  /// children) and memberships dropped by the at-most-2 rule after merging the blocks' planes.
   std::int64_t blocks = 0;
   std::int64_t memberships_dropped = 0;
-  /// Blocks whose RANSAC stopped because it reached max_planes (planes may be missing there).
+  /// Blocks whose RANSAC stopped because it reached max_planes and that could not be split
+  /// (planes may be missing there).
   std::int64_t capped_blocks = 0;
   double epsilon = 0.0;  ///< the eps actually used (scene units)
   EpsilonEstimate epsilon_estimate;  ///< how it was chosen

@@ -1,16 +1,17 @@
 #include "engine/detect/detect_planes.h"
 
+#include "engine/core/rng.h"
+#include "tests/support/thread_count.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
-
-#include "engine/core/rng.h"
-#include "tests/support/thread_count.h"
 
 namespace linesurf {
 namespace {
@@ -203,6 +204,27 @@ void ExpectSameResult(const PlaneDetectionResult& a, const PlaneDetectionResult&
   EXPECT_EQ(a.stats.candidates_evaluated, b.stats.candidates_evaluated);
 }
 
+/// How many of the 48 faces of CubeGrid have a plane within 2 degrees and 2 eps.
+int CubeGridFacesFound(const PlaneDetectionResult& r) {
+  int faces = 0;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 centre(3.0 * (c % 4), 3.0 * (c / 4), 0.2 * c);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int side = -1; side <= 1; side += 2) {
+        const Vec3 on_face = centre + side * Vec3::Unit(axis);
+        const double min_cos = std::cos(2.0 * std::numbers::pi / 180.0);
+        bool found = false;
+        for (const Plane3& plane : r.planes) {
+          found = found || (std::abs(plane.normal[axis]) > min_cos &&
+                            std::abs(plane.SignedDistance(on_face)) < 2.0 * r.stats.epsilon);
+        }
+        faces += found ? 1 : 0;
+      }
+    }
+  }
+  return faces;
+}
+
 PlaneDetectionOptions GridOptions() {
   PlaneDetectionOptions o;
   o.epsilon = 0.03;
@@ -213,14 +235,17 @@ PlaneDetectionOptions GridOptions() {
 TEST(DetectPlanes, SameSeedSameOutputForAnyThreadCount) {
   const linesurf::testing::RealThreadCounts real_threads;
   const Scene scene = CubeGrid();
-  // Whole scene; blocks cutting the cubes; one grid block split (octree) down to <= 40 lines.
-  for (const auto& [block_size, max_segments] : {std::pair{0.0, 0}, {2.0, 0}, {20.0, 40}}) {
+  // Whole scene; blocks cutting the cubes; one grid block split (octree) down to <= 40 lines;
+  // one grid block split because its RANSAC reached max_planes.
+  for (const auto& [block_size, max_segments, max_planes] :
+       {std::tuple{0.0, 0, 160}, {2.0, 0, 160}, {20.0, 40, 160}, {20.0, 0, 12}}) {
     PlaneDetectionOptions o = GridOptions();
     o.block_size = block_size;
     o.block_max_segments = max_segments;
+    o.max_planes = max_planes;
     const PlaneDetectionResult r1 = Detect(scene, o, 1);
     ASSERT_GT(r1.planes.size(), 10u);
-    EXPECT_TRUE(max_segments == 0 || r1.stats.blocks > 1);
+    EXPECT_TRUE((max_segments == 0 && max_planes == 160) || r1.stats.blocks > 1);
     for (int threads : linesurf::testing::kThreadCounts) {
       ExpectSameResult(Detect(scene, o, threads), r1);
     }
@@ -257,24 +282,21 @@ TEST(DetectPlanes, PerBlockDetectionFindsEveryCubeFaceAndKeepsTheAtMostTwoRule) 
     EXPECT_LE(count[s], 2);
     EXPECT_EQ(count[s], r.memberships[SegmentId(s)].count);
   }
-  // Each cube's six faces: one plane within 2 degrees and 2 eps of each face.
-  int faces = 0;
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 centre(3.0 * (c % 4), 3.0 * (c / 4), 0.2 * c);
-    for (int axis = 0; axis < 3; ++axis) {
-      for (int side = -1; side <= 1; side += 2) {
-        const Vec3 on_face = centre + side * Vec3::Unit(axis);
-        const double min_cos = std::cos(2.0 * std::numbers::pi / 180.0);
-        bool found = false;
-        for (const Plane3& plane : r.planes) {
-          found = found || (std::abs(plane.normal[axis]) > min_cos &&
-                            std::abs(plane.SignedDistance(on_face)) < 2.0 * r.stats.epsilon);
-        }
-        faces += found ? 1 : 0;
-      }
-    }
-  }
-  EXPECT_EQ(faces, 48);
+  EXPECT_EQ(CubeGridFacesFound(r), 48);
+}
+
+TEST(DetectPlanes, ABlockThatReachesMaxPlanesIsSplitUntilItsPlanesFit) {
+  const Scene scene = CubeGrid();
+  PlaneDetectionOptions o = GridOptions();
+  o.max_planes = 12;  // the 48 faces need at least 4 blocks
+  const PlaneDetectionResult whole = Detect(scene, o);
+  EXPECT_EQ(whole.stats.capped_blocks, 1);  // no grid, nothing to split: the cap holds
+  EXPECT_EQ(whole.planes.size(), 12u);
+  o.block_size = 20.0;  // one grid block holding the whole scene
+  const PlaneDetectionResult split = Detect(scene, o);
+  EXPECT_GE(split.stats.blocks, 4);
+  EXPECT_EQ(split.stats.capped_blocks, 0);
+  EXPECT_EQ(CubeGridFacesFound(split), 48);
 }
 
 TEST(DetectPlanes, RelativeEpsilonScalesWithTheScene) {

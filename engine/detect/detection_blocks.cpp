@@ -87,6 +87,14 @@ std::map<Key, Members> DistributeToChildren(std::span<const Segment3> segments,
   return children;
 }
 
+/// Appends the children of `parent` that hold home segments of `members`, in key order.
+void EmitChildren(std::span<const Segment3> segments,
+                  const Members& members,
+                  const BlockGrid& grid,
+                  const BlockKey& parent,
+                  const BlockLayout& layout,
+                  std::vector<DetectionBlock>& out);
+
 /// Appends the blocks of `blocks` (keys relative to `origin` at `level`) in key order, splitting
 /// the crowded ones.
 void Emit(std::span<const Segment3> segments,
@@ -108,14 +116,24 @@ void Emit(std::span<const Segment3> segments,
                          block.key.level < partition::kMaxBlockLevel;
     if (!crowded) {
       block.segments = std::move(members.ids);
+      block.home_segments = std::move(members.home_ids);
       out.push_back(std::move(block));
       continue;
     }
-    const double child_side = std::ldexp(grid.block_size(), -(block.key.level + 1));
-    std::map<Key, Members> children =
-        DistributeToChildren(segments, members, grid, block.key, layout.halo * child_side);
-    Emit(segments, children, grid, {block.key.level + 1, 2 * block.key.index}, layout, out);
+    EmitChildren(segments, members, grid, block.key, layout, out);
   }
+}
+
+void EmitChildren(std::span<const Segment3> segments,
+                  const Members& members,
+                  const BlockGrid& grid,
+                  const BlockKey& parent,
+                  const BlockLayout& layout,
+                  std::vector<DetectionBlock>& out) {
+  const double child_side = std::ldexp(grid.block_size(), -(parent.level + 1));
+  std::map<Key, Members> children =
+      DistributeToChildren(segments, members, grid, parent, layout.halo * child_side);
+  Emit(segments, children, grid, {parent.level + 1, 2 * parent.index}, layout, out);
 }
 
 }  // namespace
@@ -135,6 +153,20 @@ std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segm
       DistributeToBase(segments, all, grid, layout.halo * grid.block_size());
   std::vector<DetectionBlock> out;
   Emit(segments, base, grid, {0, Eigen::Vector3i::Zero()}, layout, out);
+  return out;
+}
+
+std::vector<DetectionBlock> SplitDetectionBlock(std::span<const Segment3> segments,
+                                                const BlockGrid& grid,
+                                                const DetectionBlock& block,
+                                                double halo) {
+  std::vector<DetectionBlock> out;
+  EmitChildren(segments,
+               Members{block.segments, block.home_segments},
+               grid,
+               block.key,
+               BlockLayout{.halo = halo, .max_home_segments = 0},
+               out);
   return out;
 }
 

@@ -3,7 +3,8 @@
 // on the block engine's one grid (partition/voxel/block_grid.h): every segment has one home
 // block (the leaf block holding its midpoint) and is also given to the leaf blocks whose box,
 // dilated by the halo, holds its midpoint. A block with too many home segments is replaced by its
-// 8 children, recursively (an octree over the crowded places).
+// 8 children, recursively (an octree over the crowded places); so is a block whose RANSAC
+// reached max_planes (SplitDetectionBlock, called by the detection).
 
 #include "engine/core/geometry.h"
 #include "engine/core/strong_id.h"
@@ -21,6 +22,8 @@ struct DetectionBlock {
   /// Segments whose midpoint lies in the block dilated by its halo (ascending). Includes every
   /// segment whose home block this is.
   std::vector<SegmentId> segments;
+  /// The segments whose home block this is (ascending; a subset of `segments`).
+  std::vector<SegmentId> home_segments;
 };
 
 struct BlockLayout {
@@ -36,5 +39,12 @@ Box3 MidpointBox(std::span<const Segment3> segments);
 std::vector<DetectionBlock> AssignDetectionBlocks(std::span<const Segment3> segments,
                                                   const partition::BlockGrid& grid,
                                                   const BlockLayout& layout);
+
+/// The children of `block` (one level down) that are home to some of its home segments, in the
+/// order of AssignDetectionBlocks, each with a halo of `halo` x its own side; not split further.
+std::vector<DetectionBlock> SplitDetectionBlock(std::span<const Segment3> segments,
+                                                const partition::BlockGrid& grid,
+                                                const DetectionBlock& block,
+                                                double halo);
 
 }  // namespace linesurf::detect

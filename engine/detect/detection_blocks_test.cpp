@@ -73,11 +73,51 @@ TEST(AssignDetectionBlocks, CrowdedBlocksAreSplitAndEveryBlockSeesItsHalo) {
       const bool home = IsHome(m, block.box, grid.box());
       homes[i] += home ? 1 : 0;
       home_count += home ? 1 : 0;
+      EXPECT_EQ(
+          home,
+          std::binary_search(block.home_segments.begin(), block.home_segments.end(), SegmentId(i)))
+          << i;
     }
     EXPECT_LE(home_count, layout.max_home_segments);
+    EXPECT_EQ(block.home_segments.size(), home_count);
   }
   EXPECT_GT(split, 8);  // the cluster's block was split (at least once)
   for (std::size_t i = 0; i < segments.size(); ++i) EXPECT_EQ(homes[i], 1) << i;
+}
+
+TEST(SplitDetectionBlock, ChildrenShareTheParentsHomeSegmentsAndSeeTheirOwnHalo) {
+  const std::vector<Segment3> segments = ClusteredSegments();
+  const BlockGrid grid = GridOf(segments, 5.0);
+  const double halo = 0.2;
+  const std::vector<DetectionBlock> blocks =
+      AssignDetectionBlocks(segments, grid, BlockLayout{.halo = halo, .max_home_segments = 0});
+  const auto crowded = std::max_element(
+      blocks.begin(), blocks.end(), [](const DetectionBlock& a, const DetectionBlock& b) {
+        return a.home_segments.size() < b.home_segments.size();
+      });
+  ASSERT_GT(crowded->home_segments.size(), 300u);  // the dense cluster
+  const std::vector<DetectionBlock> children = SplitDetectionBlock(segments, grid, *crowded, halo);
+  ASSERT_GE(children.size(), 2u);
+  std::vector<SegmentId> homes;
+  for (const DetectionBlock& child : children) {
+    EXPECT_EQ(child.key.level, 1);
+    EXPECT_EQ(child.key.index / 2, crowded->key.index);
+    EXPECT_FALSE(child.home_segments.empty());
+    const double child_halo = halo * grid.block_size() / 2.0;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const Vec3 m = segments[i].Midpoint();
+      const bool in_parent =
+          std::binary_search(crowded->segments.begin(), crowded->segments.end(), SegmentId(i));
+      const bool listed =
+          std::binary_search(child.segments.begin(), child.segments.end(), SegmentId(i));
+      EXPECT_TRUE(!in_parent || !Inside(m, child.box, child_halo - 1e-9) || listed) << i;
+      EXPECT_TRUE(!listed || Inside(m, child.box, child_halo + 1e-9)) << i;
+      EXPECT_TRUE(!listed || in_parent) << i;
+    }
+    homes.insert(homes.end(), child.home_segments.begin(), child.home_segments.end());
+  }
+  std::sort(homes.begin(), homes.end());
+  EXPECT_EQ(homes, crowded->home_segments);
 }
 
 TEST(AssignDetectionBlocks, WithoutALimitTheGridIsKept) {

@@ -84,7 +84,7 @@ struct ReconstructStats {
   std::size_t viewpoints = 0;
   std::size_t observations = 0;
   std::size_t planes = 0;
-  std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes
+  std::size_t capped_blocks = 0;  ///< detection blocks that stopped at max_planes, unsplit
   /// The eps of detection (or, with given planes, of the quality figures) and how it was chosen.
   EpsilonEstimate epsilon;
   std::array<std::size_t, 3> segments_with_planes{};  ///< on 0, 1, 2 planes
@@ -170,7 +170,7 @@ struct DetectStats {
   std::int32_t planes = 0;
   std::int32_t merges = 0;
   std::int64_t memberships_dropped = 0;  ///< by the at-most-2 rule across blocks
-  std::int64_t capped_blocks = 0;        ///< blocks whose RANSAC stopped at max_planes
+  std::int64_t capped_blocks = 0;        ///< blocks stopped at max_planes, unsplit
   std::int64_t segments_with_0_planes = 0;
   std::int64_t segments_with_1_plane = 0;
   std::int64_t segments_with_2_planes = 0;
