@@ -580,16 +580,17 @@ void ExpandToSegments(const CollinearGroups& groups, std::vector<SupportedPlane>
   }
 }
 
-/// Whether a block whose RANSAC reached max_planes is replaced by its 8 children: it lies on a
-/// grid below the deepest level and holds more home lines than max_planes planes of min_support
-/// lines of its own need (a smaller block reached the cap on shared or halo lines, which halving
-/// would not cure; the bound also ends the recursion).
+/// Whether a block whose RANSAC reached max_planes is replaced by its 8 children: the options
+/// allow it, the block lies on a grid below the deepest level, and it holds more home lines than
+/// max_planes planes of min_support lines of its own need (a smaller block reached the cap on
+/// shared or halo lines, which halving would not cure; the bound also ends the recursion).
 bool SplitAtCap(const DetectionBlock& block,
                 const DetectionLayout& layout,
                 const PlaneDetectionOptions& options) {
   const std::size_t lines_for_cap =
       static_cast<std::size_t>(options.max_planes) * static_cast<std::size_t>(options.min_support);
-  return layout.grid.has_value() && block.key.level < partition::kMaxBlockLevel &&
+  return options.split_blocks_at_cap && layout.grid.has_value() &&
+         block.key.level < partition::kMaxBlockLevel &&
          block.home_segments.size() > lines_for_cap;
 }
 

@@ -106,6 +106,10 @@ struct PlaneDetectionOptions {
   /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
   /// gives exactly the monolithic result.
   double block_size = 0.0;
+  /// A block (of a grid, block_size > 0) whose RANSAC reaches max_planes is split into its 8
+  /// half-size cubes, detected in its place (docs/plane_detection.md). Off for the eps probes,
+  /// which want only each block's largest planes.
+  bool split_blocks_at_cap = true;
   /// Halo of a block, as a fraction of its side ([0, 0.5)).
   double block_halo = 0.1;
   /// A block whose midpoints number more than this is split into 8 halves, recursively, so that

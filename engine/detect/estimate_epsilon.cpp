@@ -108,6 +108,7 @@ EpsilonEstimate Probe(const Scene& scene,
   PlaneDetectionOptions probe = options;
   probe.relative_epsilon.reset();
   probe.max_planes = std::min(options.max_planes, kProbePlanes);
+  probe.split_blocks_at_cap = false;  // the cap is the point: the largest planes of each block
   double eps = eps0;
   EpsilonEstimate out;
   // The probes report as stage estimate_epsilon (round r covers ((r - 1) / kMaxRounds,
