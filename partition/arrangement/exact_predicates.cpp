@@ -4,6 +4,7 @@
 #include "partition/arrangement/exact_predicates.h"
 
 #include <cmath>
+#include <utility>
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Mpzf.h>
@@ -12,8 +13,19 @@
 namespace linesurf::partition {
 namespace {
 
-using Interval = CGAL::Interval_nt<true>;  // protected: sets the rounding mode per operation
+// Unprotected intervals need the rounding mode upward; each predicate sets it once around its
+// interval part (WithUpwardRounding) instead of once per operation, as Interval_nt<true> does
+// (city-100: evidence 13.2 -> ? s; docs/design/block_engine.md). The exact fallbacks run in the
+// default mode.
+using Interval = CGAL::Interval_nt<false>;
 using Exact = CGAL::Mpzf;
+
+/// f() under upward rounding, the previous mode restored after; f must not let an Interval out.
+template <typename F>
+auto WithUpwardRounding(const F& f) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  return f();
+}
 
 /// Relative width above which a vertex box is recomputed exactly (tighter boxes mean fewer exact
 /// sign fallbacks later).
@@ -28,6 +40,16 @@ int SignOf(const Interval& x) {
   if (x.inf() == 0 && x.sup() == 0) return 0;
   return 2;
 }
+
+/// The signs of several 2x2 minors: one certainly nonzero, or some uncertain.
+struct MinorSigns {
+  bool nonzero = false;
+  bool uncertain = false;
+  void Add(int sign) {
+    nonzero = nonzero || sign == 1 || sign == -1;
+    uncertain = uncertain || sign == 2;
+  }
+};
 
 void CountFallback(ExactCounter* counter) {
   if (counter != nullptr) counter->exact_fallbacks.fetch_add(1, std::memory_order_relaxed);
@@ -74,21 +96,21 @@ void Cramer(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const Eigen::Vec
 }  // namespace
 
 int ExactSignAtPoint(const Eigen::Vector4d& plane, const Vec3& p, ExactCounter* counter) {
-  const int s = SignOf(Eval<Interval>(plane, p));
+  const int s = WithUpwardRounding([&] { return SignOf(Eval<Interval>(plane, p)); });
   if (s != 2) return s;
   CountFallback(counter);
   return SignOf(Eval<Exact>(plane, p));
 }
 
 int ExactSignDot(const Vec3& n, const Vec3& v, ExactCounter* counter) {
-  const int s = SignOf(Dot<Interval>(n, v));
+  const int s = WithUpwardRounding([&] { return SignOf(Dot<Interval>(n, v)); });
   if (s != 2) return s;
   CountFallback(counter);
   return SignOf(Dot<Exact>(n, v));
 }
 
 int ExactSignDet3(const Vec3& n1, const Vec3& n2, const Vec3& n3, ExactCounter* counter) {
-  const int s = SignOf(Det3<Interval>(n1, n2, n3));
+  const int s = WithUpwardRounding([&] { return SignOf(Det3<Interval>(n1, n2, n3)); });
   if (s != 2) return s;
   CountFallback(counter);
   return SignOf(Det3<Exact>(n1, n2, n3));
@@ -96,8 +118,10 @@ int ExactSignDet3(const Vec3& n1, const Vec3& n2, const Vec3& n3, ExactCounter* 
 
 int ExactSignAtVertex(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const Eigen::Vector4d& k,
                       const Eigen::Vector4d& l, ExactCounter* counter) {
-  int s4 = SignOf(Det4<Interval>(i, j, k, l));
-  int s3 = SignOf(Det3<Interval>(i.head<3>(), j.head<3>(), k.head<3>()));
+  auto [s4, s3] = WithUpwardRounding([&] {
+    return std::pair{SignOf(Det4<Interval>(i, j, k, l)),
+                     SignOf(Det3<Interval>(i.head<3>(), j.head<3>(), k.head<3>()))};
+  });
   if (s4 == 2 || s3 == 2) {
     CountFallback(counter);
     if (s4 == 2) s4 = SignOf(Det4<Exact>(i, j, k, l));
@@ -108,15 +132,17 @@ int ExactSignAtVertex(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const 
 
 int ExactProportionality(const Eigen::Vector4d& p, const Eigen::Vector4d& q, ExactCounter* counter) {
   // Proportional iff every 2x2 minor p_a q_b - p_b q_a vanishes.
-  bool uncertain = false;
-  for (int a = 0; a < 4; ++a) {
-    for (int b = a + 1; b < 4; ++b) {
-      const int s = SignOf(Interval(p[a]) * Interval(q[b]) - Interval(p[b]) * Interval(q[a]));
-      if (s == 1 || s == -1) return 0;
-      if (s == 2) uncertain = true;
+  const MinorSigns minors = WithUpwardRounding([&] {
+    MinorSigns m;
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        m.Add(SignOf(Interval(p[a]) * Interval(q[b]) - Interval(p[b]) * Interval(q[a])));
+      }
     }
-  }
-  if (uncertain) {
+    return m;
+  });
+  if (minors.nonzero) return 0;
+  if (minors.uncertain) {
     CountFallback(counter);
     for (int a = 0; a < 4; ++a) {
       for (int b = a + 1; b < 4; ++b) {
@@ -135,14 +161,16 @@ int ExactProportionality(const Eigen::Vector4d& p, const Eigen::Vector4d& q, Exa
 
 bool ExactParallelNormals(const Eigen::Vector4d& p, const Eigen::Vector4d& q, ExactCounter* counter) {
   const Vec3 n = p.head<3>(), m = q.head<3>();
-  bool uncertain = false;
-  for (int a = 0; a < 3; ++a) {
-    const int b = (a + 1) % 3;
-    const int s = SignOf(Interval(n[a]) * Interval(m[b]) - Interval(n[b]) * Interval(m[a]));
-    if (s == 1 || s == -1) return false;
-    if (s == 2) uncertain = true;
-  }
-  if (uncertain) {
+  const MinorSigns minors = WithUpwardRounding([&] {
+    MinorSigns signs;
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      signs.Add(SignOf(Interval(n[a]) * Interval(m[b]) - Interval(n[b]) * Interval(m[a])));
+    }
+    return signs;
+  });
+  if (minors.nonzero) return false;
+  if (minors.uncertain) {
     CountFallback(counter);
     for (int a = 0; a < 3; ++a) {
       const int b = (a + 1) % 3;
@@ -172,9 +200,11 @@ void AngularTerms(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q, T&
 AngularSigns ExactAngularSigns(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& q,
                                ExactCounter* counter) {
   // (a x l) x (b x l) = det[a, b, l] l, so the orientation is the sign of (a x b) . l.
-  Interval io, id;
-  AngularTerms<Interval>(a, b, p, q, io, id);
-  AngularSigns s{SignOf(io), SignOf(id)};
+  AngularSigns s = WithUpwardRounding([&] {
+    Interval io, id;
+    AngularTerms<Interval>(a, b, p, q, io, id);
+    return AngularSigns{SignOf(io), SignOf(id)};
+  });
   if (s.orientation == 2 || s.dot == 2) {
     CountFallback(counter);
     Exact eo, ed;
@@ -186,25 +216,32 @@ AngularSigns ExactAngularSigns(const Vec3& a, const Vec3& b, const Vec3& p, cons
 
 VertexBounds ComputeVertexBounds(const Eigen::Vector4d& i, const Eigen::Vector4d& j,
                                  const Eigen::Vector4d& k, ExactCounter* counter) {
-  Interval num[3];
-  Interval den;
-  Cramer<Interval>(i, j, k, num, den);
   Interval x[3];
-  bool tight = SignOf(den) == 1 || SignOf(den) == -1;
-  if (tight) {
+  const bool tight = WithUpwardRounding([&] {
+    Interval num[3];
+    Interval den;
+    Cramer<Interval>(i, j, k, num, den);
+    if (SignOf(den) != 1 && SignOf(den) != -1) return false;
+    bool narrow = true;
     for (int c = 0; c < 3; ++c) {
       x[c] = num[c] / den;
       const double width = x[c].sup() - x[c].inf();
-      if (!(width <= kVertexBoundsRelativeWidth * (1.0 + std::abs(x[c].inf())))) tight = false;
+      if (!(width <= kVertexBoundsRelativeWidth * (1.0 + std::abs(x[c].inf())))) narrow = false;
     }
-  }
+    return narrow;
+  });
   if (!tight) {
     CountFallback(counter);
     Exact enum_[3];
     Exact eden;
     Cramer<Exact>(i, j, k, enum_, eden);
-    const Interval iden(CGAL::to_interval(eden));
-    for (int c = 0; c < 3; ++c) x[c] = Interval(CGAL::to_interval(enum_[c])) / iden;
+    std::pair<double, double> bounds[4];
+    for (int c = 0; c < 3; ++c) bounds[c] = CGAL::to_interval(enum_[c]);
+    bounds[3] = CGAL::to_interval(eden);
+    WithUpwardRounding([&] {
+      for (int c = 0; c < 3; ++c) x[c] = Interval(bounds[c]) / Interval(bounds[3]);
+      return 0;
+    });
   }
   VertexBounds bounds;
   for (int c = 0; c < 3; ++c) {
