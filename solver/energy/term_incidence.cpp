@@ -68,4 +68,58 @@ double LocalEnergy(const EnergyInput& e,
   return value;
 }
 
+namespace {
+
+/// TermEnergy under `labels` and under `labels` with `cell` flipped.
+LocalEnergyPair TermEnergyAndFlipped(const EnergyInput& e,
+                                     TermRef t,
+                                     CellId cell,
+                                     const std::vector<std::uint8_t>& labels) {
+  const auto label = [&](CellId c, bool flipped) {
+    const double x = labels[c.index()];
+    return flipped && c == cell ? 1.0 - x : x;
+  };
+  if (t.kind == TermKind::kPair) {
+    const PairTerm& p = e.pairs[t.index];
+    return {p.weight * std::abs(label(p.a, false) - label(p.b, false)),
+            p.weight * std::abs(label(p.a, true) - label(p.b, true))};
+  }
+  if (t.kind == TermKind::kStructural) {
+    double sum = 0.0, sum_flipped = 0.0;
+    for (CellId c : e.StructuralGroup(t.index)) {
+      sum += label(c, false);
+      sum_flipped += label(c, true);
+    }
+    const double w = e.structural_weights[t.index];
+    return {w * std::max(0.0, 1.0 - sum), w * std::max(0.0, 1.0 - sum_flipped)};
+  }
+  const auto cells = e.ParityGroup(t.index);
+  const auto nu = e.ParitySigns(t.index);
+  double sum = 0.0, sum_flipped = 0.0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    sum += nu[i] * label(cells[i], false);
+    sum_flipped += nu[i] * label(cells[i], true);
+  }
+  const double w = e.parity_weights[t.index];
+  return {w * std::abs(sum), w * std::abs(sum_flipped)};
+}
+
+}  // namespace
+
+LocalEnergyPair LocalEnergyAndFlipped(const EnergyInput& e,
+                                      std::span<const TermRef> terms,
+                                      CellId cell,
+                                      const std::vector<std::uint8_t>& labels) {
+  const double x = labels[cell.index()];
+  const double y = 1.0 - x;
+  LocalEnergyPair out{e.cost_if_empty[cell] * (1.0 - x) + e.cost_if_full[cell] * x,
+                      e.cost_if_empty[cell] * (1.0 - y) + e.cost_if_full[cell] * y};
+  for (const TermRef& t : terms) {
+    const LocalEnergyPair term = TermEnergyAndFlipped(e, t, cell, labels);
+    out.current += term.current;
+    out.flipped += term.flipped;
+  }
+  return out;
+}
+
 }  // namespace linesurf::solver

@@ -118,10 +118,10 @@ class GroupMover {
     for (std::uint32_t i = 1; i < count; ++i) {
       const std::size_t j = static_cast<std::size_t>(std::countr_zero(i));
       const CellId c = CellOf(slots[j]);
-      const auto terms = incidence_.Terms(slots[j]);
-      const double before = LocalEnergy(e_, terms, c, labels);
+      const LocalEnergyPair local =
+          LocalEnergyAndFlipped(e_, incidence_.Terms(slots[j]), c, labels);
       labels[c.index()] ^= 1u;
-      delta += LocalEnergy(e_, terms, c, labels) - before;
+      delta += local.flipped - local.current;
       if (delta < best) {
         best = delta;
         best_code = i ^ (i >> 1);
