@@ -208,7 +208,7 @@ class BlockSolver {
     Sweep(result);
     result.local_search_flips = ImproveLabels(energy_, options_.local_search_passes, result.labels);
     result.group_move_changes =
-        ImproveByGroupMoves(energy_, options_.group_move_passes, result.labels);
+        ImproveByGroupMoves(energy_, options_.group_move_passes, ctx_, result.labels);
     Log("local search " + std::to_string(result.local_search_flips) + " flips, group moves " +
         std::to_string(result.group_move_changes) + " changes");
     const WindowPolishStats polished = PolishResultInWindows(energy_, options_, ctx_, result);

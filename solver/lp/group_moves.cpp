@@ -1,8 +1,13 @@
 #include "solver/lp/group_moves.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/parallel.h"
 #include "solver/energy/term_incidence.h"
 #include "solver/lp/round_labels.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <bit>
 #include <cmath>
@@ -12,6 +17,8 @@ namespace {
 
 // Sweeps of single flips between group sweeps.
 constexpr int kFlipPasses = 10;
+// Moves per parallel task (a move walks up to 2^8 labellings).
+constexpr std::size_t kMovesPerTask = 64;
 
 // The cells of a term, in storage order.
 std::span<const CellId> TermCells(const EnergyInput& e, TermRef t, CellId (&pair)[2]) {
@@ -72,25 +79,28 @@ class GroupMover {
     }
   }
 
-  // One sweep over the terms touching a marked cell; clears the marks. Returns cells changed.
-  std::size_t Sweep(std::vector<std::uint8_t>& labels) {
+  // One sweep over the terms touching a marked cell, in term order; clears the marks. Returns
+  // cells changed. With more than one thread the moves are first evaluated in parallel from the
+  // labels at the start of the sweep; then, in term order, a move whose cells' local energies no
+  // earlier move of the sweep has changed takes its evaluated labelling, any other is evaluated
+  // again. Either way each move sees the labels the serial sweep would: the same result.
+  std::size_t Sweep(std::vector<std::uint8_t>& labels, const RunContext& ctx) {
     const std::vector<std::uint8_t> marked = std::move(dirty_);
     dirty_.assign(marked.size(), 0);
+    const std::vector<Move> moves = MovesTouching(marked);
+    std::vector<std::uint32_t> evaluated;
+    if (ArenaConcurrency(ctx.num_threads) > 1) evaluated = EvaluateInParallel(moves, labels, ctx);
+    std::vector<std::uint8_t> stale(evaluated.empty() ? 0 : free_.size(), 0);
     std::size_t changed = 0;
-    ForEachTerm(e_, [&](TermRef t) {
-      CellId pair[2];
-      std::uint32_t slots[kMaxGroupMoveCells];
-      std::size_t k = 0;
-      bool touched = false;
-      for (CellId c : TermCells(e_, t, pair)) {
-        const std::uint32_t s = incidence_.Slot(c);
-        if (s == TermIncidence::kNone) continue;
-        if (k == kMaxGroupMoveCells) return;
-        slots[k++] = s;
-        touched = touched || marked[s] != 0;
-      }
-      if (k >= 2 && touched) changed += BestJointLabels(std::span(slots, k), labels);
-    });
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      const std::span<const std::uint32_t> slots = moves[i].Slots();
+      bool current = !evaluated.empty();
+      for (std::uint32_t s : slots) current = current && stale[s] == 0;
+      const std::uint32_t code = current ? evaluated[i] : BestJointLabels(slots, labels);
+      if (code == 0) continue;
+      changed += Apply(slots, code, labels);
+      if (!stale.empty()) MarkStale(slots, code, stale);
+    }
     return changed;
   }
 
@@ -102,9 +112,55 @@ class GroupMover {
     }
   }
 
-  // Gray-code walk over the 2^k labellings of the cells at `slots`; keeps the best.
-  std::size_t BestJointLabels(std::span<const std::uint32_t> slots,
-                              std::vector<std::uint8_t>& labels) {
+  // The free cells (slots) of one term whose joint labelling a sweep optimises.
+  struct Move {
+    std::uint32_t slots[kMaxGroupMoveCells];
+    std::uint8_t size = 0;
+    [[nodiscard]] std::span<const std::uint32_t> Slots() const { return {slots, size}; }
+  };
+
+  // The terms with 2 to kMaxGroupMoveCells free cells, one of them marked, in term order.
+  [[nodiscard]] std::vector<Move> MovesTouching(const std::vector<std::uint8_t>& marked) const {
+    std::vector<Move> moves;
+    ForEachTerm(e_, [&](TermRef t) {
+      CellId pair[2];
+      Move move;
+      bool touched = false;
+      for (CellId c : TermCells(e_, t, pair)) {
+        const std::uint32_t s = incidence_.Slot(c);
+        if (s == TermIncidence::kNone) continue;
+        if (move.size == kMaxGroupMoveCells) return;
+        move.slots[move.size++] = s;
+        touched = touched || marked[s] != 0;
+      }
+      if (move.size >= 2 && touched) moves.push_back(move);
+    });
+    return moves;
+  }
+
+  // BestJointLabels of every move under `labels` (unchanged), in parallel; each thread walks on
+  // its own copy of the labels.
+  std::vector<std::uint32_t> EvaluateInParallel(const std::vector<Move>& moves,
+                                                const std::vector<std::uint8_t>& labels,
+                                                const RunContext& ctx) const {
+    std::vector<std::uint32_t> codes(moves.size(), 0);
+    tbb::enumerable_thread_specific<std::vector<std::uint8_t>> copies(labels);
+    RunInArena(ctx, [&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, moves.size(), kMovesPerTask),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          std::vector<std::uint8_t>& own = copies.local();
+                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                            codes[i] = BestJointLabels(moves[i].Slots(), own);
+                          }
+                        });
+    });
+    return codes;
+  }
+
+  // Gray-code walk over the 2^k labellings of the cells at `slots`; returns the best one as the
+  // bits to flip (0: keep), `labels` left as they were.
+  std::uint32_t BestJointLabels(std::span<const std::uint32_t> slots,
+                                std::vector<std::uint8_t>& labels) const {
     std::uint8_t original[kMaxGroupMoveCells];
     double scale = 1.0;
     for (std::size_t j = 0; j < slots.size(); ++j) {
@@ -127,24 +183,44 @@ class GroupMover {
         best_code = i ^ (i >> 1);
       }
     }
-    if (!(best < -kImproveTolerance * scale)) best_code = 0;
+    for (std::size_t j = 0; j < slots.size(); ++j) labels[CellOf(slots[j]).index()] = original[j];
+    return best < -kImproveTolerance * scale ? best_code : 0;
+  }
+
+  // Flips the cells of `code` and marks the free cells around them for the next sweep. Returns
+  // the cells flipped.
+  std::size_t Apply(std::span<const std::uint32_t> slots,
+                    std::uint32_t code,
+                    std::vector<std::uint8_t>& labels) {
     std::size_t changed = 0;
     for (std::size_t j = 0; j < slots.size(); ++j) {
-      const std::uint8_t flip = (best_code >> j) & 1u;
-      labels[CellOf(slots[j]).index()] = original[j] ^ flip;
-      changed += flip;
-    }
-    if (changed > 0) {
-      for (std::size_t j = 0; j < slots.size(); ++j) {
-        if (((best_code >> j) & 1u) == 0) continue;
-        dirty_[slots[j]] = 1;
-        for (const TermRef& t : incidence_.Terms(slots[j])) {
-          CellId pair[2];
-          MarkFree(TermCells(e_, t, pair));
-        }
+      if (((code >> j) & 1u) == 0) continue;
+      labels[CellOf(slots[j]).index()] ^= 1u;
+      ++changed;
+      dirty_[slots[j]] = 1;
+      for (const TermRef& t : incidence_.Terms(slots[j])) {
+        CellId pair[2];
+        MarkFree(TermCells(e_, t, pair));
       }
     }
     return changed;
+  }
+
+  // A flipped cell changes the local energy of every free cell it shares a term with (itself
+  // included): their parallel evaluations are stale.
+  void MarkStale(std::span<const std::uint32_t> slots,
+                 std::uint32_t code,
+                 std::vector<std::uint8_t>& stale) const {
+    for (std::size_t j = 0; j < slots.size(); ++j) {
+      if (((code >> j) & 1u) == 0) continue;
+      for (const TermRef& t : incidence_.Terms(slots[j])) {
+        CellId pair[2];
+        for (CellId c : TermCells(e_, t, pair)) {
+          const std::uint32_t s = incidence_.Slot(c);
+          if (s != TermIncidence::kNone) stale[s] = 1;
+        }
+      }
+    }
   }
 
   [[nodiscard]] CellId CellOf(std::uint32_t slot) const { return free_[slot]; }
@@ -159,6 +235,7 @@ class GroupMover {
 
 std::size_t ImproveByGroupMoves(const EnergyInput& energy,
                                 int max_passes,
+                                const RunContext& ctx,
                                 std::vector<std::uint8_t>& labels) {
   LINESURF_ASSERT(labels.size() == energy.NumCells());
   const std::vector<CellId> free = energy.FreeCells();
@@ -167,7 +244,7 @@ std::size_t ImproveByGroupMoves(const EnergyInput& energy,
   mover.MarkSurface(labels);
   std::size_t changed = 0;
   for (int pass = 0; pass < max_passes; ++pass) {
-    const std::size_t moved = mover.Sweep(labels);
+    const std::size_t moved = mover.Sweep(labels, ctx);
     const std::vector<std::uint8_t> before = labels;
     const std::size_t flipped = ImproveLabels(energy, kFlipPasses, labels);
     if (flipped > 0) mover.MarkAroundChanges(before, labels);

@@ -4,6 +4,7 @@
 // labelling with every other cell held. Single flips cannot leave a crease or a checkerboard of
 // a parity group whose cells only pay off together; one group move can.
 
+#include "engine/core/run_context.h"
 #include "solver/energy/energy_input.h"
 
 #include <cstdint>
@@ -20,9 +21,12 @@ inline constexpr std::size_t kMaxGroupMoveCells = 8;
 /// cell next to the surface of `labels` (a term whose cells carry different labels) or a cell
 /// whose unary cost prefers the other label; later sweeps only the terms touching a cell that
 /// shares a term with a cell changed before. Single-cell flips run between
-/// sweeps. Never raises the energy; deterministic, serial. Returns the number of cells changed.
+/// sweeps. Never raises the energy. The moves of a sweep are evaluated in parallel on
+/// ctx.num_threads threads and taken in term order, so the labels are those of the serial sweep
+/// for any thread count. Returns the number of cells changed.
 std::size_t ImproveByGroupMoves(const EnergyInput& energy,
                                 int max_passes,
+                                const RunContext& ctx,
                                 std::vector<std::uint8_t>& labels);
 
 }  // namespace linesurf::solver

@@ -78,7 +78,7 @@ bool Improve(const EnergyInput& energy, const LabelingOptions& options, const Ru
              LabelingResult& result) {
   result.local_search_flips = ImproveLabels(energy, options.local_search_passes, result.labels);
   result.group_move_changes =
-      ImproveByGroupMoves(energy, options.group_move_passes, result.labels);
+      ImproveByGroupMoves(energy, options.group_move_passes, ctx, result.labels);
   // The exact backends (cbc, maxflow) solve the integer program themselves: no windows.
   const bool exact = result.backend == "cbc" || result.backend == "maxflow";
   const WindowPolishStats polished =

@@ -22,28 +22,42 @@ constexpr const char* kPdhgEnergyStage = "solve_labeling";
 constexpr double kStepFactor = 0.95;
 
 // K (rows: pairs, structural groups, parity groups, in that order) with its transpose; every
-// entry is +-1, so only the signs are stored. b and the multiplier box [lower, upper] per row.
+// entry is +-1, so only the signs are stored. Per row only the multiplier bound `upper` (the
+// weight) is stored: the offset b (0 for a pair, 1 for a structural group, the constant of a
+// parity group) and the lower bound (-upper, 0 for a structural group) follow from the row's
+// kind, which keeps the memory an iteration streams through small.
 struct SaddleProblem {
   std::size_t num_rows = 0;
   std::size_t num_cols = 0;
+  std::size_t first_structural_row = 0;
+  std::size_t first_parity_row = 0;
   std::vector<std::uint32_t> row_offsets{0};
   std::vector<std::uint32_t> row_columns;
   std::vector<std::int8_t> row_signs;
   std::vector<std::uint32_t> col_offsets;
   std::vector<std::uint32_t> col_rows;
   std::vector<std::int8_t> col_signs;
-  std::vector<double> b;
-  std::vector<double> lower;
   std::vector<double> upper;
+  std::vector<std::int32_t> parity_constants;
   std::vector<double> unary;
   double constant = 0.0;
 
   // Closes the row whose entries were just appended.
-  void AddRow(double offset, double lo, double hi) {
+  void AddRow(double weight) {
     row_offsets.push_back(static_cast<std::uint32_t>(row_columns.size()));
-    b.push_back(offset);
-    lower.push_back(lo);
-    upper.push_back(hi);
+    upper.push_back(weight);
+  }
+
+  // b of row r.
+  [[nodiscard]] double Offset(std::size_t r) const {
+    if (r < first_structural_row) return 0.0;
+    if (r < first_parity_row) return 1.0;
+    return static_cast<double>(parity_constants[r - first_parity_row]);
+  }
+
+  // The lower multiplier bound of row r.
+  [[nodiscard]] double Lower(std::size_t r) const {
+    return r >= first_structural_row && r < first_parity_row ? 0.0 : -upper[r];
   }
 };
 
@@ -61,23 +75,26 @@ SaddleProblem BuildSaddle(const ReducedEnergy& e) {
   for (const ReducedEnergy::Pair& pair : e.pairs) {
     p.row_columns.insert(p.row_columns.end(), {pair.a, pair.b});
     p.row_signs.insert(p.row_signs.end(), {std::int8_t{1}, std::int8_t{-1}});
-    p.AddRow(0.0, -pair.weight, pair.weight);
+    p.AddRow(pair.weight);
   }
+  p.first_structural_row = p.upper.size();
   for (std::size_t g = 0; g < e.structural_weights.size(); ++g) {
     for (std::uint32_t k = e.structural_offsets[g]; k < e.structural_offsets[g + 1]; ++k) {
       p.row_columns.push_back(e.structural_columns[k]);
       p.row_signs.push_back(-1);
     }
-    p.AddRow(1.0, 0.0, e.structural_weights[g]);
+    p.AddRow(e.structural_weights[g]);
   }
+  p.first_parity_row = p.upper.size();
   for (std::size_t g = 0; g < e.parity_weights.size(); ++g) {
     for (std::uint32_t k = e.parity_offsets[g]; k < e.parity_offsets[g + 1]; ++k) {
       p.row_columns.push_back(e.parity_columns[k]);
       p.row_signs.push_back(e.parity_signs[k]);
     }
-    p.AddRow(e.parity_constants[g], -e.parity_weights[g], e.parity_weights[g]);
+    p.AddRow(e.parity_weights[g]);
   }
-  p.num_rows = p.b.size();
+  p.parity_constants = e.parity_constants;
+  p.num_rows = p.upper.size();
   CompressedRows<std::int8_t> columns =
       TransposeRows<std::int8_t>(p.row_offsets, p.row_columns, p.row_signs, p.num_cols);
   p.col_offsets = std::move(columns.offsets);
@@ -102,13 +119,18 @@ class EnergyPdhg {
     const std::size_t n = p_.num_cols, m = p_.num_rows;
     // Preconditioned steps (Pock & Chambolle 2011, alpha = 1, |K_ij| = 1): 1 / entries.
     tau_.assign(n, 0.0);
-    sigma_.assign(m, 0.0);
     for (std::size_t j = 0; j < n; ++j) {
       const std::uint32_t count = p_.col_offsets[j + 1] - p_.col_offsets[j];
       tau_[j] = count == 0 ? 0.0 : kStepFactor / count;
     }
+    // A row's dual step depends only on its entry count: one value per count.
+    std::uint32_t max_count = 0;
     for (std::size_t r = 0; r < m; ++r) {
-      sigma_[r] = kStepFactor / (p_.row_offsets[r + 1] - p_.row_offsets[r]);
+      max_count = std::max(max_count, p_.row_offsets[r + 1] - p_.row_offsets[r]);
+    }
+    sigma_by_count_.assign(max_count + 1, 0.0);
+    for (std::uint32_t count = 1; count <= max_count; ++count) {
+      sigma_by_count_[count] = kStepFactor / count;
     }
     // A column in no term: its optimum is read off its unary coefficient.
     Point current{std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
@@ -127,11 +149,13 @@ class EnergyPdhg {
     best_x_ = current.x;
 
     for (std::int64_t it = 1; it <= options_.pdhg_max_iterations; ++it) {
-      Iterate(current, anchor, since_restart, weight, step, extrapolated);
+      // T's point is read only at the checks: between them it is not stored.
+      const bool check = it % kRestartCheckPeriod == 0 || it == options_.pdhg_max_iterations;
+      Iterate(current, anchor, since_restart, weight, check, step, extrapolated);
       ++since_restart;
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgEnergyStage, "pdhg-energy cancelled by the host");
-      if (it % kRestartCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
+      if (!check) continue;
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -172,34 +196,38 @@ class EnergyPdhg {
   // iteration (Lu & Yang 2024, "Restarted Halpern PDHG for linear programming") in place,
   // z <- (k+1)/(k+2) (2 T(z) - z) + 1/(k+2) z_0, k the iterations since the restart and z_0 the
   // restart point. A column's z is replaced once T no longer needs it (the rows read only the
-  // extrapolated x), a row's right after its own update. On the block engine's Andalusian energy
+  // extrapolated x), a row's right after its own update. T(z) itself is written to `step` only
+  // when `keep_step` (the iterations that check the gap). On the block engine's Andalusian energy
   // 12,864 iterations where PDLP's restarts to the average took 16,128
   // (docs/design/lp_backend.md, "Energy pdhg").
   void Iterate(Point& z,
                const Point& anchor,
                std::int64_t k,
                double weight,
+               bool keep_step,
                Point& step,
                std::vector<double>& extrapolated) const {
     const double lambda = (static_cast<double>(k) + 1.0) / (static_cast<double>(k) + 2.0);
     ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j) {
-        if (tau_[j] == 0.0) {
-          step.x[j] = z.x[j];
-        } else {
-          step.x[j] = std::clamp(z.x[j] - tau_[j] / weight * ReducedCost(j, z.y), 0.0, 1.0);
-        }
-        extrapolated[j] = 2.0 * step.x[j] - z.x[j];
+        const double x = tau_[j] == 0.0
+                             ? z.x[j]
+                             : std::clamp(z.x[j] - tau_[j] / weight * ReducedCost(j, z.y), 0.0, 1.0);
+        if (keep_step) step.x[j] = x;
+        extrapolated[j] = 2.0 * x - z.x[j];
       }
     });
     ForChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
       for (std::size_t r = begin; r < end; ++r) {
-        double kx = p_.b[r];
-        for (std::uint32_t i = p_.row_offsets[r]; i < p_.row_offsets[r + 1]; ++i) {
+        const std::uint32_t first = p_.row_offsets[r], last = p_.row_offsets[r + 1];
+        double kx = p_.Offset(r);
+        for (std::uint32_t i = first; i < last; ++i) {
           kx += p_.row_signs[i] * extrapolated[p_.row_columns[i]];
         }
-        step.y[r] = std::clamp(z.y[r] + weight * sigma_[r] * kx, p_.lower[r], p_.upper[r]);
-        z.y[r] = lambda * (2.0 * step.y[r] - z.y[r]) + (1.0 - lambda) * anchor.y[r];
+        const double y = std::clamp(
+            z.y[r] + weight * sigma_by_count_[last - first] * kx, p_.Lower(r), p_.upper[r]);
+        if (keep_step) step.y[r] = y;
+        z.y[r] = lambda * (2.0 * y - z.y[r]) + (1.0 - lambda) * anchor.y[r];
       }
     });
     // extrapolated = 2 T(x) - x: the reflection of x already.
@@ -223,7 +251,7 @@ class EnergyPdhg {
   double DualValue(const std::vector<double>& y) const {
     const double by = SumChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
       double s = 0.0;
-      for (std::size_t r = begin; r < end; ++r) s += p_.b[r] * y[r];
+      for (std::size_t r = begin; r < end; ++r) s += p_.Offset(r) * y[r];
       return s;
     });
     const double reduced = SumChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
@@ -271,7 +299,7 @@ class EnergyPdhg {
   const RunContext& ctx_;
   SaddleProblem p_;
   std::vector<double> tau_;
-  std::vector<double> sigma_;
+  std::vector<double> sigma_by_count_;
   double best_primal_ = 0.0;
   double best_dual_ = 0.0;
   std::vector<double> best_x_;
