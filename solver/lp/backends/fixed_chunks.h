@@ -17,17 +17,20 @@ namespace linesurf::solver {
 
 /// Elements per parallel chunk.
 inline constexpr std::size_t kFixedChunk = 8192;
+/// Elements per chunk of a loop whose elements are independent (nothing summed across them):
+/// any split gives the same result, so smaller chunks only balance the threads better.
+inline constexpr std::size_t kElementwiseChunk = 1024;
 
-/// Runs fn(begin, end) over the fixed chunks of [0, n), in parallel.
+/// Runs fn(begin, end) over the chunks of `chunk` elements of [0, n), in parallel.
 template <typename Fn>
-void ForChunks(std::size_t n, const Fn& fn) {
+void ForChunks(std::size_t n, const Fn& fn, std::size_t chunk = kFixedChunk) {
   if (n == 0) return;
-  const std::size_t num_chunks = (n + kFixedChunk - 1) / kFixedChunk;
+  const std::size_t num_chunks = (n + chunk - 1) / chunk;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, num_chunks, 1),
       [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t c = r.begin(); c != r.end(); ++c) {
-          fn(c * kFixedChunk, std::min(n, (c + 1) * kFixedChunk));
+          fn(c * chunk, std::min(n, (c + 1) * chunk));
         }
       },
       tbb::simple_partitioner{});

@@ -216,7 +216,7 @@ class EnergyPdhg {
         if (keep_step) step.x[j] = x;
         extrapolated[j] = 2.0 * x - z.x[j];
       }
-    });
+    }, kElementwiseChunk);
     ForChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
       for (std::size_t r = begin; r < end; ++r) {
         const std::uint32_t first = p_.row_offsets[r], last = p_.row_offsets[r + 1];
@@ -229,13 +229,13 @@ class EnergyPdhg {
         if (keep_step) step.y[r] = y;
         z.y[r] = lambda * (2.0 * y - z.y[r]) + (1.0 - lambda) * anchor.y[r];
       }
-    });
+    }, kElementwiseChunk);
     // extrapolated = 2 T(x) - x: the reflection of x already.
     ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j) {
         z.x[j] = lambda * extrapolated[j] + (1.0 - lambda) * anchor.x[j];
       }
-    });
+    }, kElementwiseChunk);
   }
 
   // (u + K^T y)_j: the primal gradient of column j, the reduced cost in the dual.
