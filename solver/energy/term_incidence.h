@@ -39,17 +39,6 @@ class TermIncidence {
                                 TermRef t,
                                 const std::vector<std::uint8_t>& labels);
 
-/// LocalEnergy under `labels` and under `labels` with `cell` flipped, in one pass: each value the
-/// same double as LocalEnergy's with those labels (the same additions in the same order).
-struct LocalEnergyPair {
-  double current = 0.0;
-  double flipped = 0.0;
-};
-[[nodiscard]] LocalEnergyPair LocalEnergyAndFlipped(const EnergyInput& e,
-                                                    std::span<const TermRef> terms,
-                                                    CellId cell,
-                                                    const std::vector<std::uint8_t>& labels);
-
 /// Energy of `terms` (those touching `cell`) plus the unary of `cell` under `labels`.
 [[nodiscard]] double LocalEnergy(const EnergyInput& e,
                                  std::span<const TermRef> terms,

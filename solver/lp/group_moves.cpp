@@ -3,13 +3,13 @@
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "solver/energy/term_incidence.h"
+#include "solver/lp/joint_label_walk.h"
 #include "solver/lp/round_labels.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include <bit>
 #include <cmath>
 
 namespace linesurf::solver {
@@ -47,7 +47,11 @@ void ForEachTerm(const EnergyInput& e, Visit&& visit) {
 class GroupMover {
  public:
   GroupMover(const EnergyInput& e, std::span<const CellId> free)
-      : e_(e), free_(free.begin(), free.end()), incidence_(e, free), dirty_(free.size(), 0) {}
+      : e_(e),
+        free_(free.begin(), free.end()),
+        incidence_(e, free),
+        walk_(e, free_, incidence_),
+        dirty_(free.size(), 0) {}
 
   // Marks the free cells of every term whose cells carry different labels, and the free cells
   // whose own unary cost prefers the other label.
@@ -96,7 +100,7 @@ class GroupMover {
       const std::span<const std::uint32_t> slots = moves[i].Slots();
       bool current = !evaluated.empty();
       for (std::uint32_t s : slots) current = current && stale[s] == 0;
-      const std::uint32_t code = current ? evaluated[i] : BestJointLabels(slots, labels);
+      const std::uint32_t code = current ? evaluated[i] : walk_.BestFlips(slots, labels);
       if (code == 0) continue;
       changed += Apply(slots, code, labels);
       if (!stale.empty()) MarkStale(slots, code, stale);
@@ -114,12 +118,12 @@ class GroupMover {
 
   // The free cells (slots) of one term whose joint labelling a sweep optimises.
   struct Move {
-    std::uint32_t slots[kMaxGroupMoveCells];
+    std::uint32_t slots[kMaxJointCells];
     std::uint8_t size = 0;
     [[nodiscard]] std::span<const std::uint32_t> Slots() const { return {slots, size}; }
   };
 
-  // The terms with 2 to kMaxGroupMoveCells free cells, one of them marked, in term order.
+  // The terms with 2 to kMaxJointCells free cells, one of them marked, in term order.
   [[nodiscard]] std::vector<Move> MovesTouching(const std::vector<std::uint8_t>& marked) const {
     std::vector<Move> moves;
     ForEachTerm(e_, [&](TermRef t) {
@@ -129,7 +133,7 @@ class GroupMover {
       for (CellId c : TermCells(e_, t, pair)) {
         const std::uint32_t s = incidence_.Slot(c);
         if (s == TermIncidence::kNone) continue;
-        if (move.size == kMaxGroupMoveCells) return;
+        if (move.size == kMaxJointCells) return;
         move.slots[move.size++] = s;
         touched = touched || marked[s] != 0;
       }
@@ -138,53 +142,23 @@ class GroupMover {
     return moves;
   }
 
-  // BestJointLabels of every move under `labels` (unchanged), in parallel; each thread walks on
-  // its own copy of the labels.
+  // The best flips of every move under `labels`, in parallel.
   std::vector<std::uint32_t> EvaluateInParallel(const std::vector<Move>& moves,
                                                 const std::vector<std::uint8_t>& labels,
                                                 const RunContext& ctx) const {
     std::vector<std::uint32_t> codes(moves.size(), 0);
-    tbb::enumerable_thread_specific<std::vector<std::uint8_t>> copies(labels);
+    tbb::enumerable_thread_specific<JointLabelWalk> walks(
+        [&] { return JointLabelWalk(e_, free_, incidence_); });
     RunInArena(ctx, [&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, moves.size(), kMovesPerTask),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          std::vector<std::uint8_t>& own = copies.local();
+                          JointLabelWalk& walk = walks.local();
                           for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                            codes[i] = BestJointLabels(moves[i].Slots(), own);
+                            codes[i] = walk.BestFlips(moves[i].Slots(), labels);
                           }
                         });
     });
     return codes;
-  }
-
-  // Gray-code walk over the 2^k labellings of the cells at `slots`; returns the best one as the
-  // bits to flip (0: keep), `labels` left as they were.
-  std::uint32_t BestJointLabels(std::span<const std::uint32_t> slots,
-                                std::vector<std::uint8_t>& labels) const {
-    std::uint8_t original[kMaxGroupMoveCells];
-    double scale = 1.0;
-    for (std::size_t j = 0; j < slots.size(); ++j) {
-      const CellId c = CellOf(slots[j]);
-      original[j] = labels[c.index()];
-      scale += std::abs(LocalEnergy(e_, incidence_.Terms(slots[j]), c, labels));
-    }
-    double delta = 0.0, best = 0.0;
-    std::uint32_t best_code = 0;
-    const std::uint32_t count = 1u << slots.size();
-    for (std::uint32_t i = 1; i < count; ++i) {
-      const std::size_t j = static_cast<std::size_t>(std::countr_zero(i));
-      const CellId c = CellOf(slots[j]);
-      const LocalEnergyPair local =
-          LocalEnergyAndFlipped(e_, incidence_.Terms(slots[j]), c, labels);
-      labels[c.index()] ^= 1u;
-      delta += local.flipped - local.current;
-      if (delta < best) {
-        best = delta;
-        best_code = i ^ (i >> 1);
-      }
-    }
-    for (std::size_t j = 0; j < slots.size(); ++j) labels[CellOf(slots[j]).index()] = original[j];
-    return best < -kImproveTolerance * scale ? best_code : 0;
   }
 
   // Flips the cells of `code` and marks the free cells around them for the next sweep. Returns
@@ -228,6 +202,7 @@ class GroupMover {
   const EnergyInput& e_;
   std::vector<CellId> free_;
   TermIncidence incidence_;
+  JointLabelWalk walk_;  // the serial walk
   std::vector<std::uint8_t> dirty_;
 };
 

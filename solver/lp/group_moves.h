@@ -12,11 +12,9 @@
 
 namespace linesurf::solver {
 
-/// Terms with more free cells than this are skipped (2^8 joint labellings per move).
-inline constexpr std::size_t kMaxGroupMoveCells = 8;
-
 /// Sweeps (at most `max_passes`) over the terms in order (pairs, structural, parity), each time
-/// giving the free cells of a term their best joint labelling (exhaustive, Gray-code order) when
+/// giving the free cells of a term their best joint labelling (JointLabelWalk; terms with more
+/// than kMaxJointCells free cells are skipped) when
 /// that lowers the energy beyond rounding noise. The first sweep visits the terms touching a
 /// cell next to the surface of `labels` (a term whose cells carry different labels) or a cell
 /// whose unary cost prefers the other label; later sweeps only the terms touching a cell that

@@ -1,6 +1,5 @@
 #include "solver/lp/group_moves.h"
 
-#include "solver/energy/term_incidence.h"
 #include "solver/lp/round_labels.h"
 #include "solver/testing/random_energy.h"
 #include "tests/support/thread_count.h"
@@ -27,23 +26,6 @@ TEST(GroupMoves, FlipTogetherWhatNoSingleFlipImproves) {
   EXPECT_EQ(ImproveLabels(e, 10, labels), 0u);
   EXPECT_EQ(ImproveByGroupMoves(e, 10, RunContext{}, labels), 2u);
   EXPECT_EQ(labels, (std::vector<std::uint8_t>{1, 1}));
-}
-
-TEST(GroupMoves, LocalEnergyAndFlippedIsLocalEnergyBeforeAndAfterTheFlip) {
-  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    const EnergyInput e = testing::SmallRandomEnergy(seed);
-    const std::vector<CellId> free = e.FreeCells();
-    const TermIncidence incidence(e, free);
-    std::vector<std::uint8_t> labels(e.NumCells());
-    for (std::size_t c = 0; c < labels.size(); ++c) labels[c] = (c * 7 + seed) % 3 == 0 ? 1 : 0;
-    for (std::size_t i = 0; i < free.size(); ++i) {
-      const LocalEnergyPair both = LocalEnergyAndFlipped(e, incidence.Terms(i), free[i], labels);
-      EXPECT_EQ(both.current, LocalEnergy(e, incidence.Terms(i), free[i], labels)) << i;
-      labels[free[i].index()] ^= 1u;
-      EXPECT_EQ(both.flipped, LocalEnergy(e, incidence.Terms(i), free[i], labels)) << i;
-      labels[free[i].index()] ^= 1u;
-    }
-  }
 }
 
 TEST(GroupMoves, NeverRaiseTheEnergyAndKeepFixedCells) {
