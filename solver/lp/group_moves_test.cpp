@@ -15,6 +15,16 @@ double Energy(const EnergyInput& e, const std::vector<std::uint8_t>& labels) {
   return e.Evaluate(std::span<const std::uint8_t>(labels));
 }
 
+// Fixed cells at their label, free cells in a seeded pattern.
+std::vector<std::uint8_t> StartLabels(const EnergyInput& e, std::uint64_t seed) {
+  std::vector<std::uint8_t> labels(e.NumCells());
+  for (std::size_t c = 0; c < labels.size(); ++c) {
+    const CellFix f = e.fixed[CellId(c)];
+    labels[c] = f == CellFix::kFull ? 1 : (f == CellFix::kEmpty ? 0 : (c * 7 + seed) % 3 == 0);
+  }
+  return labels;
+}
+
 TEST(GroupMoves, FlipTogetherWhatNoSingleFlipImproves) {
   // Two empty cells that both want to be full but pay a strong pairwise term when they differ:
   // each single flip costs 1 - 0.6, the joint flip gains 1.2.
@@ -38,11 +48,7 @@ TEST(GroupMoves, NeverRaiseTheEnergyAndKeepFixedCells) {
     spec.fixed_fraction = 0.1;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    std::vector<std::uint8_t> labels(e.NumCells());
-    for (std::size_t c = 0; c < labels.size(); ++c) {
-      const CellFix f = e.fixed[CellId(c)];
-      labels[c] = f == CellFix::kFull ? 1 : (f == CellFix::kEmpty ? 0 : (c * 7 + seed) % 3 == 0);
-    }
+    std::vector<std::uint8_t> labels = StartLabels(e, seed);
     ImproveLabels(e, 10, labels);
     const double before = Energy(e, labels);
     ImproveByGroupMoves(e, 10, RunContext{}, labels);
@@ -68,11 +74,7 @@ TEST(GroupMoves, SameLabelsForAnyThreadCount) {
     spec.num_parity = 900;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    std::vector<std::uint8_t> start(e.NumCells());
-    for (std::size_t c = 0; c < start.size(); ++c) {
-      const CellFix f = e.fixed[CellId(c)];
-      start[c] = f == CellFix::kFull ? 1 : (f == CellFix::kEmpty ? 0 : (c * 7 + seed) % 3 == 0);
-    }
+    const std::vector<std::uint8_t> start = StartLabels(e, seed);
     RunContext serial;
     serial.num_threads = 1;
     std::vector<std::uint8_t> expected = start;
