@@ -50,7 +50,7 @@ class GroupMover {
       : e_(e),
         free_(free.begin(), free.end()),
         incidence_(e, free),
-        walk_(e, free_, incidence_),
+        walks_([this] { return JointLabelWalk(e_, free_, incidence_); }),
         dirty_(free.size(), 0) {}
 
   // Marks the free cells of every term whose cells carry different labels, and the free cells
@@ -67,19 +67,14 @@ class GroupMover {
       const auto cells = TermCells(e_, t, pair);
       bool mixed = false;
       for (CellId c : cells) mixed = mixed || labels[c.index()] != labels[cells[0].index()];
-      if (mixed) MarkFree(cells);
+      if (mixed) MarkFree(cells, dirty_);
     });
   }
 
   // Marks the free cells sharing a term with a cell whose label differs between `a` and `b`.
   void MarkAroundChanges(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
     for (std::size_t i = 0; i < free_.size(); ++i) {
-      if (a[free_[i].index()] == b[free_[i].index()]) continue;
-      dirty_[i] = 1;
-      for (const TermRef& t : incidence_.Terms(i)) {
-        CellId pair[2];
-        MarkFree(TermCells(e_, t, pair));
-      }
+      if (a[free_[i].index()] != b[free_[i].index()]) MarkAround(i, dirty_);
     }
   }
 
@@ -100,19 +95,27 @@ class GroupMover {
       const std::span<const std::uint32_t> slots = moves[i].Slots();
       bool current = !evaluated.empty();
       for (std::uint32_t s : slots) current = current && stale[s] == 0;
-      const std::uint32_t code = current ? evaluated[i] : walk_.BestFlips(slots, labels);
+      const std::uint32_t code = current ? evaluated[i] : walks_.local().BestFlips(slots, labels);
       if (code == 0) continue;
-      changed += Apply(slots, code, labels);
-      if (!stale.empty()) MarkStale(slots, code, stale);
+      changed += Apply(slots, code, labels, stale);
     }
     return changed;
   }
 
  private:
-  void MarkFree(std::span<const CellId> cells) {
+  void MarkFree(std::span<const CellId> cells, std::vector<std::uint8_t>& marks) const {
     for (CellId c : cells) {
       const std::uint32_t s = incidence_.Slot(c);
-      if (s != TermIncidence::kNone) dirty_[s] = 1;
+      if (s != TermIncidence::kNone) marks[s] = 1;
+    }
+  }
+
+  // Marks the free cell at `slot` and every free cell it shares a term with.
+  void MarkAround(std::uint32_t slot, std::vector<std::uint8_t>& marks) const {
+    marks[slot] = 1;
+    for (const TermRef& t : incidence_.Terms(slot)) {
+      CellId pair[2];
+      MarkFree(TermCells(e_, t, pair), marks);
     }
   }
 
@@ -145,14 +148,12 @@ class GroupMover {
   // The best flips of every move under `labels`, in parallel.
   std::vector<std::uint32_t> EvaluateInParallel(const std::vector<Move>& moves,
                                                 const std::vector<std::uint8_t>& labels,
-                                                const RunContext& ctx) const {
+                                                const RunContext& ctx) {
     std::vector<std::uint32_t> codes(moves.size(), 0);
-    tbb::enumerable_thread_specific<JointLabelWalk> walks(
-        [&] { return JointLabelWalk(e_, free_, incidence_); });
     RunInArena(ctx, [&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, moves.size(), kMovesPerTask),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          JointLabelWalk& walk = walks.local();
+                          JointLabelWalk& walk = walks_.local();
                           for (std::size_t i = range.begin(); i != range.end(); ++i) {
                             codes[i] = walk.BestFlips(moves[i].Slots(), labels);
                           }
@@ -161,40 +162,23 @@ class GroupMover {
     return codes;
   }
 
-  // Flips the cells of `code` and marks the free cells around them for the next sweep. Returns
-  // the cells flipped.
+  // Flips the cells of `code` and marks the free cells around them for the next sweep and, when
+  // `stale` is not empty, as stale: a flipped cell changes the local energy of every free cell
+  // it shares a term with (itself included), so their parallel evaluations no longer hold.
+  // Returns the cells flipped.
   std::size_t Apply(std::span<const std::uint32_t> slots,
                     std::uint32_t code,
-                    std::vector<std::uint8_t>& labels) {
+                    std::vector<std::uint8_t>& labels,
+                    std::vector<std::uint8_t>& stale) {
     std::size_t changed = 0;
     for (std::size_t j = 0; j < slots.size(); ++j) {
       if (((code >> j) & 1u) == 0) continue;
       labels[CellOf(slots[j]).index()] ^= 1u;
       ++changed;
-      dirty_[slots[j]] = 1;
-      for (const TermRef& t : incidence_.Terms(slots[j])) {
-        CellId pair[2];
-        MarkFree(TermCells(e_, t, pair));
-      }
+      MarkAround(slots[j], dirty_);
+      if (!stale.empty()) MarkAround(slots[j], stale);
     }
     return changed;
-  }
-
-  // A flipped cell changes the local energy of every free cell it shares a term with (itself
-  // included): their parallel evaluations are stale.
-  void MarkStale(std::span<const std::uint32_t> slots,
-                 std::uint32_t code,
-                 std::vector<std::uint8_t>& stale) const {
-    for (std::size_t j = 0; j < slots.size(); ++j) {
-      if (((code >> j) & 1u) == 0) continue;
-      for (const TermRef& t : incidence_.Terms(slots[j])) {
-        CellId pair[2];
-        for (CellId c : TermCells(e_, t, pair)) {
-          const std::uint32_t s = incidence_.Slot(c);
-          if (s != TermIncidence::kNone) stale[s] = 1;
-        }
-      }
-    }
   }
 
   [[nodiscard]] CellId CellOf(std::uint32_t slot) const { return free_[slot]; }
@@ -202,7 +186,8 @@ class GroupMover {
   const EnergyInput& e_;
   std::vector<CellId> free_;
   TermIncidence incidence_;
-  JointLabelWalk walk_;  // the serial walk
+  // One walk (and its scratch of two words per term) per thread, kept across sweeps.
+  tbb::enumerable_thread_specific<JointLabelWalk> walks_;
   std::vector<std::uint8_t> dirty_;
 };
 
