@@ -243,6 +243,9 @@ Status LabelingOptions::Validate() const {
   if (!(pdhg_tolerance > 0.0 && pdhg_tolerance <= 1e-1)) {
     return InvalidOption("pdhg_tolerance: must be in (0, 1e-1]");
   }
+  if (!(pdhg_energy_tolerance > 0.0 && pdhg_energy_tolerance <= 1e-1)) {
+    return InvalidOption("pdhg_energy_tolerance: must be in (0, 1e-1]");
+  }
   if (pdhg_max_iterations < 1) return InvalidOption("pdhg_max_iterations: must be >= 1");
   if (local_search_passes < 0 || local_search_passes > 1000) {
     return InvalidOption("local_search_passes: must be in [0, 1000]");

@@ -211,6 +211,11 @@ TEST(SolveLabeling, RejectsBadOptionsAndInput) {
   options = {};
   options.pdhg_tolerance = 0.0;
   EXPECT_EQ(SolveLabeling(Chain(), options, RunContext{}).error().code, ErrorCode::kInvalidOptions);
+  options = {};
+  options.pdhg_energy_tolerance = 0.2;
+  const auto too_loose = SolveLabeling(Chain(), options, RunContext{});
+  ASSERT_FALSE(too_loose);
+  EXPECT_NE(too_loose.error().message.find("pdhg_energy_tolerance"), std::string::npos);
   EnergyInput bad = Chain();
   bad.AddPair(CellId(0u), CellId(99u), 1.0);
   EXPECT_EQ(SolveLabeling(bad, LabelingOptions{}, RunContext{}).error().code,

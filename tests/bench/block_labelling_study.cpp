@@ -19,7 +19,8 @@
 //       (docs/design/lp_backend.md, "Energy pdhg").
 // `inner` is LabelingOptions::block_backend; KEY=VALUE sets other LabelingOptions fields:
 // window_cells, block_halo, local_search_passes, group_move_passes, pdhg_tolerance,
-// auto_clp_max_columns, block_bound_passes, block_sweeps, auto_blocks_min_columns.
+// pdhg_energy_tolerance, auto_clp_max_columns, block_bound_passes, block_sweeps,
+// auto_blocks_min_columns.
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/block_evidence.h"
@@ -191,6 +192,8 @@ bool SetOptions(const std::string& list, solver::LabelingOptions& options) {
       options.group_move_passes = static_cast<int>(value);
     } else if (key == "pdhg_tolerance") {
       options.pdhg_tolerance = value;
+    } else if (key == "pdhg_energy_tolerance") {
+      options.pdhg_energy_tolerance = value;
     } else if (key == "auto_clp_max_columns") {
       options.auto_clp_max_columns = static_cast<std::size_t>(value);
     } else if (key == "block_bound_passes") {

@@ -187,7 +187,7 @@ class EnergyPdhg {
                "pdhg-energy reached its iteration limit of " +
                    std::to_string(options_.pdhg_max_iterations) + " with the gap " +
                    std::to_string(best_primal_ - best_dual_) + " above tolerance " +
-                   std::to_string(options_.pdhg_tolerance));
+                   std::to_string(options_.pdhg_energy_tolerance));
   }
 
  private:
@@ -276,7 +276,7 @@ class EnergyPdhg {
 
   [[nodiscard]] bool Converged() const {
     return best_primal_ - best_dual_ <=
-           options_.pdhg_tolerance * std::max(1.0, std::abs(best_primal_));
+           options_.pdhg_energy_tolerance * std::max(1.0, std::abs(best_primal_));
   }
 
   LpSolution Solution(std::int64_t iterations) const {
@@ -290,7 +290,7 @@ class EnergyPdhg {
     s.objective = best_primal_;
     s.lower_bound = best_dual_;
     s.iterations = iterations;
-    s.status = "optimal (tolerance " + std::to_string(options_.pdhg_tolerance) + ")";
+    s.status = "optimal (tolerance " + std::to_string(options_.pdhg_energy_tolerance) + ")";
     return s;
   }
 

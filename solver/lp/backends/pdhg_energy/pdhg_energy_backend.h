@@ -15,7 +15,7 @@
 /// every y proves the lower bound
 ///   D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j)
 /// of the relaxation (and so of the integral optimum). Stops when the best primal value and the
-/// best bound are within LabelingOptions::pdhg_tolerance (relative).
+/// best bound are within LabelingOptions::pdhg_energy_tolerance (relative).
 ///
 /// Against "pdhg" on the LP (build_lp.h), the same relaxation has one variable per free cell
 /// instead of one per cell and term, and one multiplier per term instead of two rows.
