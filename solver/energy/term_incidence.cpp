@@ -5,6 +5,30 @@
 
 namespace linesurf::solver {
 
+std::span<const CellId> TermCells(const EnergyInput& e, TermRef t, CellId (&pair)[2]) {
+  if (t.kind == TermKind::kPair) {
+    pair[0] = e.pairs[t.index].a;
+    pair[1] = e.pairs[t.index].b;
+    return pair;
+  }
+  return t.kind == TermKind::kStructural ? e.StructuralGroup(t.index) : e.ParityGroup(t.index);
+}
+
+void MarkAround(const EnergyInput& e,
+                const TermIncidence& incidence,
+                std::uint32_t slot,
+                std::vector<std::uint8_t>& marks,
+                std::uint8_t mark) {
+  marks[slot] = mark;
+  for (const TermRef& t : incidence.Terms(slot)) {
+    CellId pair[2];
+    for (CellId c : TermCells(e, t, pair)) {
+      const std::uint32_t s = incidence.Slot(c);
+      if (s != TermIncidence::kNone) marks[s] = mark;
+    }
+  }
+}
+
 TermIncidence::TermIncidence(const EnergyInput& e, std::span<const CellId> cells) {
   slot_.assign(e.NumCells(), kNone);
   for (std::size_t i = 0; i < cells.size(); ++i) {

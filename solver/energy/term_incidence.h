@@ -34,6 +34,17 @@ class TermIncidence {
   std::vector<TermRef> terms_;
 };
 
+/// The cells of term `t`, in storage order; a pair's two cells are written to `pair`.
+[[nodiscard]] std::span<const CellId> TermCells(const EnergyInput& e, TermRef t, CellId (&pair)[2]);
+
+/// Sets marks[s] = mark for the cell at `slot` of `incidence` and every cell of the list it
+/// shares a term with: the cells whose local energy a change of that cell's label changes.
+void MarkAround(const EnergyInput& e,
+                const TermIncidence& incidence,
+                std::uint32_t slot,
+                std::vector<std::uint8_t>& marks,
+                std::uint8_t mark = 1);
+
 /// Energy of one term under 0/1 `labels`.
 [[nodiscard]] double TermEnergy(const EnergyInput& e,
                                 TermRef t,

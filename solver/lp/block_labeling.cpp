@@ -53,20 +53,6 @@ struct BlockOutcome {
   std::int64_t iterations = 0;
 };
 
-// Calls visit(c) for every cell of term t.
-template <typename Visit>
-void ForTermCells(const EnergyInput& e, const TermRef& t, Visit&& visit) {
-  if (t.kind == TermKind::kPair) {
-    visit(e.pairs[t.index].a);
-    visit(e.pairs[t.index].b);
-    return;
-  }
-  for (CellId c :
-       t.kind == TermKind::kStructural ? e.StructuralGroup(t.index) : e.ParityGroup(t.index)) {
-    visit(c);
-  }
-}
-
 // Minimises a block's sub-energy: the exact max-flow shortcut, else the inner SolveLabeling.
 BlockOutcome SolveBlock(const SubEnergy& sub,
                         std::size_t num_chosen,
@@ -294,11 +280,12 @@ class BlockSolver {
       std::vector<CellId> next;
       for (CellId c : ring) {
         for (const TermRef& t : incidence_.Terms(incidence_.Slot(c))) {
-          ForTermCells(energy_, t, [&](CellId d) {
+          CellId pair[2];
+          for (CellId d : TermCells(energy_, t, pair)) {
             if (energy_.fixed[d] == CellFix::kFree && block_of_cell_[d.index()] != b) {
               next.push_back(d);
             }
-          });
+          }
         }
       }
       std::sort(next.begin(), next.end());

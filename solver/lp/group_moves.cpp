@@ -20,16 +20,6 @@ constexpr int kFlipPasses = 10;
 // Moves per parallel task (a move walks up to 2^8 labellings).
 constexpr std::size_t kMovesPerTask = 64;
 
-// The cells of a term, in storage order.
-std::span<const CellId> TermCells(const EnergyInput& e, TermRef t, CellId (&pair)[2]) {
-  if (t.kind == TermKind::kPair) {
-    pair[0] = e.pairs[t.index].a;
-    pair[1] = e.pairs[t.index].b;
-    return pair;
-  }
-  return t.kind == TermKind::kStructural ? e.StructuralGroup(t.index) : e.ParityGroup(t.index);
-}
-
 // Every term in order: pairs, structural groups, parity groups.
 template <typename Visit>
 void ForEachTerm(const EnergyInput& e, Visit&& visit) {
@@ -112,11 +102,7 @@ class GroupMover {
 
   // Marks the free cell at `slot` and every free cell it shares a term with.
   void MarkAround(std::uint32_t slot, std::vector<std::uint8_t>& marks) const {
-    marks[slot] = 1;
-    for (const TermRef& t : incidence_.Terms(slot)) {
-      CellId pair[2];
-      MarkFree(TermCells(e_, t, pair), marks);
-    }
+    solver::MarkAround(e_, incidence_, slot, marks);
   }
 
   // The free cells (slots) of one term whose joint labelling a sweep optimises.

@@ -1,12 +1,18 @@
 #include "solver/lp/window_polish.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/parallel.h"
 #include "solver/energy/build_lp.h"
 #include "solver/energy/sub_energy.h"
 #include "solver/lp/backends/cbc/cbc_backend.h"
 #include "solver/lp/lp_backend.h"
 #include "solver/lp/round_labels.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#include <algorithm>
 #include <cmath>
 
 namespace linesurf::solver {
@@ -16,6 +22,9 @@ constexpr const char* kWindowPolishStage = "solve_labeling";
 // A relaxed value this far from 0 and 1 makes its cell a seed: well above the error of the
 // first-order backend (pdhg stops at a relative 1e-4), whose cells are never exactly integral.
 constexpr double kSeedDistance = 1e-3;
+
+// Windows solved from the same labels before their results are taken in order.
+constexpr std::size_t kWindowBatch = 64;
 
 // Up to `size` free cells reached from `seed` through shared terms, breadth first in term order.
 std::vector<CellId> GrowWindow(const EnergyInput& e,
@@ -28,20 +37,12 @@ std::vector<CellId> GrowWindow(const EnergyInput& e,
   in_window[seed] = 1;
   for (std::size_t head = 0; head < slots.size() && slots.size() < size; ++head) {
     for (const TermRef& t : incidence.Terms(slots[head])) {
-      const auto visit = [&](CellId c) {
+      CellId pair[2];
+      for (CellId c : TermCells(e, t, pair)) {
         const std::uint32_t s = incidence.Slot(c);
-        if (s == TermIncidence::kNone || in_window[s] != 0 || slots.size() >= size) return;
+        if (s == TermIncidence::kNone || in_window[s] != 0 || slots.size() >= size) continue;
         in_window[s] = 1;
         slots.push_back(s);
-      };
-      if (t.kind == TermKind::kPair) {
-        visit(e.pairs[t.index].a);
-        visit(e.pairs[t.index].b);
-      } else {
-        for (CellId c : t.kind == TermKind::kStructural ? e.StructuralGroup(t.index)
-                                                        : e.ParityGroup(t.index)) {
-          visit(c);
-        }
       }
     }
   }
@@ -51,6 +52,60 @@ std::vector<CellId> GrowWindow(const EnergyInput& e,
     window.push_back(free[s]);
   }
   return window;
+}
+
+// The windows in seed order, each grown from the first seed no earlier window covers; they do
+// not depend on the labels.
+std::vector<std::vector<CellId>> PlanWindows(const EnergyInput& energy,
+                                             const TermIncidence& incidence,
+                                             std::span<const CellId> free,
+                                             std::span<const std::uint32_t> seeds,
+                                             const WindowPolishOptions& options) {
+  std::vector<std::vector<CellId>> windows;
+  std::vector<std::uint8_t> covered(free.size(), 0), in_window(free.size(), 0);
+  for (std::uint32_t seed : seeds) {
+    if (covered[seed] != 0) continue;
+    if (windows.size() == options.max_windows) break;
+    // Few enough free cells: one window holds them all, connected or not.
+    windows.push_back(
+        free.size() <= options.window_cells
+            ? std::vector<CellId>(free.begin(), free.end())
+            : GrowWindow(energy, incidence, free, seed, options.window_cells, in_window));
+    for (CellId c : windows.back()) covered[incidence.Slot(c)] = 1;
+  }
+  return windows;
+}
+
+// A window's integer program solved with every other cell at its label in `labels`.
+struct WindowSolve {
+  bool proven = false;
+  bool improves = false;
+  std::vector<std::uint8_t> labels;  // per window cell, when it improves
+};
+
+WindowSolve SolveWindow(const EnergyInput& energy,
+                        const TermIncidence& incidence,
+                        std::span<const CellId> window,
+                        const std::vector<std::uint8_t>& labels,
+                        const IlpLimits& limits,
+                        const RunContext& ctx) {
+  ctx.ThrowIfCancelled(kWindowPolishStage);
+  const SubEnergy sub = RestrictEnergy(energy, incidence, window, labels);
+  const ReducedEnergy reduced = ReduceEnergy(sub.energy);
+  LINESURF_ASSERT(reduced.NumFree() == window.size());
+  std::vector<double> start(window.size());
+  for (std::size_t j = 0; j < window.size(); ++j) start[j] = labels[window[j].index()];
+  const double start_energy = reduced.Evaluate(start);
+  const LpSolution solution =
+      SolveIlpWithCbc(BuildLpModel(reduced), window.size(), start, limits, ctx);
+  WindowSolve out;
+  out.proven = solution.status == "optimal";
+  out.improves =
+      solution.objective < start_energy - kImproveTolerance * (1.0 + std::abs(start_energy));
+  if (out.improves) {
+    for (double x : solution.columns) out.labels.push_back(x > 0.5 ? 1 : 0);
+  }
+  return out;
 }
 
 }  // namespace
@@ -76,40 +131,54 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
   }
   if (seeds.empty()) return stats;
   const TermIncidence incidence(energy, free);
-  std::vector<std::uint8_t> covered(free.size(), 0), in_window(free.size(), 0);
+  const std::vector<std::vector<CellId>> windows =
+      PlanWindows(energy, incidence, free, seeds, options);
   IlpLimits limits;
   limits.max_nodes = options.max_nodes;
-  for (std::uint32_t seed : seeds) {
-    if (covered[seed] != 0) continue;
-    if (stats.windows == options.max_windows) break;
-    ctx.ThrowIfCancelled(kWindowPolishStage);
-    // Few enough free cells: one window holds them all, connected or not.
-    const std::vector<CellId> window =
-        free.size() <= options.window_cells
-            ? free
-            : GrowWindow(energy, incidence, free, seed, options.window_cells, in_window);
-    for (CellId c : window) covered[incidence.Slot(c)] = 1;
-    const SubEnergy sub = RestrictEnergy(energy, incidence, window, labels);
-    const ReducedEnergy reduced = ReduceEnergy(sub.energy);
-    LINESURF_ASSERT(reduced.NumFree() == window.size());
-    std::vector<double> start(window.size());
-    for (std::size_t j = 0; j < window.size(); ++j) start[j] = labels[window[j].index()];
-    const double start_energy = reduced.Evaluate(start);
-    const LpSolution solution =
-        SolveIlpWithCbc(BuildLpModel(reduced), window.size(), start, limits, ctx);
-    ++stats.windows;
-    const bool proven = solution.status == "optimal";
-    stats.proven_windows += proven ? 1 : 0;
-    if (window.size() == free.size()) stats.whole_energy_proven = proven;
-    if (!(solution.objective < start_energy - kImproveTolerance * (1.0 + std::abs(start_energy)))) {
-      continue;
+  // Each batch is solved in parallel from the labels at its start; then, in window order, a
+  // window takes its solve unless an earlier window of the batch changed a cell it shares a term
+  // with (marked stale), in which case it is solved again on the current labels. Every window
+  // sees the labels the serial order gives it: the same result for any thread count.
+  std::vector<std::uint8_t> stale(free.size(), 0);
+  std::vector<WindowSolve> solves;
+  // One thread: batches of one window, the serial order itself.
+  const std::size_t batch = ArenaConcurrency(ctx.num_threads) > 1 ? kWindowBatch : 1;
+  for (std::size_t first = 0; first < windows.size(); first += batch) {
+    const std::size_t last = std::min(windows.size(), first + batch);
+    solves.assign(last - first, WindowSolve{});
+    RunInArena(ctx, [&] {
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(first, last, 1),
+          [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t w = r.begin(); w != r.end(); ++w) {
+              solves[w - first] = SolveWindow(energy, incidence, windows[w], labels, limits, ctx);
+            }
+          },
+          tbb::simple_partitioner{});
+    });
+    std::vector<std::uint32_t> marked;
+    for (std::size_t w = first; w < last; ++w) {
+      const std::vector<CellId>& window = windows[w];
+      WindowSolve& solve = solves[w - first];
+      const bool is_stale = std::any_of(
+          window.begin(), window.end(), [&](CellId c) { return stale[incidence.Slot(c)] != 0; });
+      if (is_stale) solve = SolveWindow(energy, incidence, window, labels, limits, ctx);
+      ++stats.windows;
+      stats.proven_windows += solve.proven ? 1 : 0;
+      if (window.size() == free.size()) stats.whole_energy_proven = solve.proven;
+      if (!solve.improves) continue;
+      ++stats.improved_windows;
+      for (std::size_t j = 0; j < window.size(); ++j) {
+        const std::uint32_t slot = incidence.Slot(window[j]);
+        if (solve.labels[j] == labels[window[j].index()]) continue;
+        ++stats.changed_cells;
+        labels[window[j].index()] = solve.labels[j];
+        MarkAround(energy, incidence, slot, stale);
+        marked.push_back(slot);
+      }
     }
-    ++stats.improved_windows;
-    for (std::size_t j = 0; j < window.size(); ++j) {
-      const std::uint8_t label = solution.columns[j] > 0.5 ? 1 : 0;
-      stats.changed_cells += label != labels[window[j].index()] ? 1 : 0;
-      labels[window[j].index()] = label;
-    }
+    // The next batch starts from the current labels: nothing is stale.
+    for (std::uint32_t slot : marked) MarkAround(energy, incidence, slot, stale, 0);
   }
   return stats;
 }

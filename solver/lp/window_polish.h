@@ -39,7 +39,8 @@ struct WindowPolishStats {
 /// Improves `labels` (one 0/1 label per cell, fixed cells at their label) in place; never raises
 /// the energy. `relaxed` (one value per cell) chooses the seeds: free cells whose value is more
 /// than 1e-3 from 0 and 1, or whose label differs from its value rounded at 1/2, in id order.
-/// Deterministic, serial. Throws kCancelled when ctx.ShouldStop().
+/// Windows are solved in parallel batches (ctx.num_threads) with the result of the serial order:
+/// the same labels for any thread count. Throws kCancelled when ctx.ShouldStop().
 WindowPolishStats PolishInWindows(const EnergyInput& energy,
                                   std::span<const double> relaxed,
                                   const WindowPolishOptions& options,
