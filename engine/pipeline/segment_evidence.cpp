@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 #include <tbb/partitioner.h>
 
 #include <algorithm>
@@ -415,15 +416,18 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
   stats.parallel_creases = acc.parallel_creases.load();
 
   IntegratedEvidence out;
-  // Structural groups: concatenated in chunk order, sorted by cells, identical groups merged
-  // (integer sums, so the order of addition does not matter).
+  // Structural groups: concatenated in chunk order, sorted by cells (in parallel: unstable, but
+  // identical groups are merged with integer sums, so the order of addition does not matter).
   std::vector<StructuralEntry> all;
   for (auto& chunk : acc.structural) {
     all.insert(all.end(), chunk.begin(), chunk.end());
     std::vector<StructuralEntry>().swap(chunk);
   }
-  std::sort(all.begin(), all.end(), [](const StructuralEntry& x, const StructuralEntry& y) {
-    return x.cells < y.cells;
+  RunInArena(ctx, [&] {
+    tbb::parallel_sort(
+        all.begin(), all.end(), [](const StructuralEntry& x, const StructuralEntry& y) {
+          return x.cells < y.cells;
+        });
   });
   for (std::size_t i = 0; i < all.size();) {
     StructuralEntry merged{all[i].cells, 0};
