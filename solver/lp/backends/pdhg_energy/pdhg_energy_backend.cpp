@@ -7,6 +7,7 @@
 #include "solver/lp/backends/transpose_rows.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -21,31 +22,53 @@ constexpr const char* kPdhgEnergyStage = "solve_labeling";
 // Step factor below the bound 1 of the preconditioned steps, a margin for rounding.
 constexpr double kStepFactor = 0.95;
 
-// K (rows: pairs, structural groups, parity groups, in that order) with its transpose; every
-// entry is +-1, so only the signs are stored. Per row only the multiplier bound `upper` (the
-// weight) is stored: the offset b (0 for a pair, 1 for a structural group, the constant of a
-// parity group) and the lower bound (-upper, 0 for a structural group) follow from the row's
-// kind, which keeps the memory an iteration streams through small.
+// An entry of K is +-1: it is stored as the index of its column (in a row) or row (in a
+// column) with the sign in the top bit, one word where an index and a sign byte took five.
+constexpr std::uint32_t kNegativeEntry = 0x80000000u;
+
+[[nodiscard]] inline std::uint32_t EntryIndex(std::uint32_t entry) {
+  return entry & ~kNegativeEntry;
+}
+
+// entry * v, exactly: +v or -v (the entry's sign bit moved onto v's, without a branch on
+// signs that follow no pattern).
+[[nodiscard]] inline double EntryTimes(std::uint32_t entry, double v) {
+  const std::uint64_t sign = static_cast<std::uint64_t>(entry & kNegativeEntry) << 32;
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ sign);
+}
+
+// K (rows: pairs, structural groups, parity groups, in that order) with its transpose, in signed
+// entries. Per row only the multiplier bound `upper` (the weight) is stored: the offset b (0 for
+// a pair, 1 for a structural group, the constant of a parity group) and the lower bound (-upper,
+// 0 for a structural group) follow from the row's kind, which keeps the memory an iteration
+// streams through small.
 struct SaddleProblem {
   std::size_t num_rows = 0;
   std::size_t num_cols = 0;
   std::size_t first_structural_row = 0;
   std::size_t first_parity_row = 0;
   std::vector<std::uint32_t> row_offsets{0};
-  std::vector<std::uint32_t> row_columns;
-  std::vector<std::int8_t> row_signs;
+  std::vector<std::uint32_t> row_entries;
   std::vector<std::uint32_t> col_offsets;
-  std::vector<std::uint32_t> col_rows;
-  std::vector<std::int8_t> col_signs;
+  std::vector<std::uint32_t> col_entries;
   std::vector<double> upper;
   std::vector<std::int32_t> parity_constants;
   std::vector<double> unary;
   double constant = 0.0;
 
+  void AddEntry(std::uint32_t column, int sign) {
+    row_entries.push_back(sign < 0 ? column | kNegativeEntry : column);
+  }
+
   // Closes the row whose entries were just appended.
   void AddRow(double weight) {
-    row_offsets.push_back(static_cast<std::uint32_t>(row_columns.size()));
+    row_offsets.push_back(static_cast<std::uint32_t>(row_entries.size()));
     upper.push_back(weight);
+  }
+
+  // Entries of column j.
+  [[nodiscard]] std::uint32_t ColumnCount(std::size_t j) const {
+    return col_offsets[j + 1] - col_offsets[j];
   }
 
   // b of row r.
@@ -64,42 +87,48 @@ struct SaddleProblem {
 SaddleProblem BuildSaddle(const ReducedEnergy& e) {
   const std::size_t entries =
       2 * e.pairs.size() + e.structural_columns.size() + e.parity_columns.size();
-  LINESURF_THROW_IF(entries >= std::numeric_limits<std::uint32_t>::max(),
-                    kResourceExhausted,
-                    kPdhgEnergyStage,
-                    "energy too large for 32-bit indices: " << entries << " term entries");
+  const std::size_t rows = e.pairs.size() + e.structural_weights.size() + e.parity_weights.size();
+  LINESURF_THROW_IF(
+      std::max({entries, rows, e.NumFree()}) >= kNegativeEntry,
+      kResourceExhausted,
+      kPdhgEnergyStage,
+      "energy too large for 31-bit indices: " << entries << " term entries, " << rows << " terms");
   SaddleProblem p;
   p.num_cols = e.NumFree();
   p.unary = e.unary;
   p.constant = e.constant;
   for (const ReducedEnergy::Pair& pair : e.pairs) {
-    p.row_columns.insert(p.row_columns.end(), {pair.a, pair.b});
-    p.row_signs.insert(p.row_signs.end(), {std::int8_t{1}, std::int8_t{-1}});
+    p.AddEntry(pair.a, 1);
+    p.AddEntry(pair.b, -1);
     p.AddRow(pair.weight);
   }
   p.first_structural_row = p.upper.size();
   for (std::size_t g = 0; g < e.structural_weights.size(); ++g) {
     for (std::uint32_t k = e.structural_offsets[g]; k < e.structural_offsets[g + 1]; ++k) {
-      p.row_columns.push_back(e.structural_columns[k]);
-      p.row_signs.push_back(-1);
+      p.AddEntry(e.structural_columns[k], -1);
     }
     p.AddRow(e.structural_weights[g]);
   }
   p.first_parity_row = p.upper.size();
   for (std::size_t g = 0; g < e.parity_weights.size(); ++g) {
     for (std::uint32_t k = e.parity_offsets[g]; k < e.parity_offsets[g + 1]; ++k) {
-      p.row_columns.push_back(e.parity_columns[k]);
-      p.row_signs.push_back(e.parity_signs[k]);
+      p.AddEntry(e.parity_columns[k], e.parity_signs[k]);
     }
     p.AddRow(e.parity_weights[g]);
   }
   p.parity_constants = e.parity_constants;
   p.num_rows = p.upper.size();
-  CompressedRows<std::int8_t> columns =
-      TransposeRows<std::int8_t>(p.row_offsets, p.row_columns, p.row_signs, p.num_cols);
-  p.col_offsets = std::move(columns.offsets);
-  p.col_rows = std::move(columns.index);
-  p.col_signs = std::move(columns.value);
+  std::vector<std::uint32_t> columns(p.row_entries.size());
+  std::vector<std::uint32_t> signs(p.row_entries.size());
+  for (std::size_t k = 0; k < p.row_entries.size(); ++k) {
+    columns[k] = EntryIndex(p.row_entries[k]);
+    signs[k] = p.row_entries[k] & kNegativeEntry;
+  }
+  CompressedRows<std::uint32_t> transposed =
+      TransposeRows<std::uint32_t>(p.row_offsets, columns, signs, p.num_cols);
+  p.col_offsets = std::move(transposed.offsets);
+  p.col_entries = std::move(transposed.index);
+  for (std::size_t k = 0; k < p.col_entries.size(); ++k) p.col_entries[k] |= transposed.value[k];
   return p;
 }
 
@@ -117,41 +146,38 @@ class EnergyPdhg {
   LpSolution Run() {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = p_.num_cols, m = p_.num_rows;
-    // Preconditioned steps (Pock & Chambolle 2011, alpha = 1, |K_ij| = 1): 1 / entries.
-    tau_.assign(n, 0.0);
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::uint32_t count = p_.col_offsets[j + 1] - p_.col_offsets[j];
-      tau_[j] = count == 0 ? 0.0 : kStepFactor / count;
-    }
-    // A row's dual step depends only on its entry count: one value per count.
+    // Preconditioned steps (Pock & Chambolle 2011, alpha = 1, |K_ij| = 1): 1 / entries, for a
+    // column and a row alike; one value per entry count, so no step is streamed per element.
     std::uint32_t max_count = 0;
     for (std::size_t r = 0; r < m; ++r) {
       max_count = std::max(max_count, p_.row_offsets[r + 1] - p_.row_offsets[r]);
     }
-    sigma_by_count_.assign(max_count + 1, 0.0);
+    for (std::size_t j = 0; j < n; ++j) max_count = std::max(max_count, p_.ColumnCount(j));
+    step_by_count_.assign(max_count + 1, 0.0);
     for (std::uint32_t count = 1; count <= max_count; ++count) {
-      sigma_by_count_[count] = kStepFactor / count;
+      step_by_count_[count] = kStepFactor / count;
     }
-    // A column in no term: its optimum is read off its unary coefficient.
-    Point current{std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
+    // The restart point z_0. A column in no term: its optimum is read off its unary coefficient.
+    Point anchor{std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
     for (std::size_t j = 0; j < n; ++j) {
-      if (tau_[j] == 0.0) current.x[j] = energy_.unary[j] < 0.0 ? 1.0 : 0.0;
+      if (p_.ColumnCount(j) == 0) anchor.x[j] = energy_.unary[j] < 0.0 ? 1.0 : 0.0;
     }
-    Point step = current;  // T(current): the PDHG step, a feasible point
-    Point anchor = current;
-    std::vector<double> extrapolated(n, 0.0);
+    Point step = anchor;  // T(z): the PDHG step, a feasible point
+    // The Halpern point z: its multipliers; its x is never stored (Iterate).
+    std::vector<double> z_y = anchor.y;
+    std::vector<double> reflected(n, 0.0);
     double weight = 1.0;
     double restart_gap = -1.0;  // set at the first check
     double previous_gap = std::numeric_limits<double>::infinity();
     std::int64_t since_restart = 0;
     best_primal_ = std::numeric_limits<double>::infinity();
     best_dual_ = -std::numeric_limits<double>::infinity();
-    best_x_ = current.x;
+    best_x_ = anchor.x;
 
     for (std::int64_t it = 1; it <= options_.pdhg_max_iterations; ++it) {
       // T's point is read only at the checks: between them it is not stored.
       const bool check = it % kRestartCheckPeriod == 0 || it == options_.pdhg_max_iterations;
-      Iterate(current, anchor, since_restart, weight, check, step, extrapolated);
+      Iterate(z_y, anchor, since_restart, weight, check, step, reflected);
       ++since_restart;
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgEnergyStage, "pdhg-energy cancelled by the host");
@@ -176,7 +202,7 @@ class EnergyPdhg {
       weight = SmoothedPrimalWeight(
           weight, ChunkedDistance(step.x, anchor.x), ChunkedDistance(step.y, anchor.y));
       anchor = step;
-      current = step;
+      z_y = step.y;
       restart_gap = gap;
       previous_gap = std::numeric_limits<double>::infinity();
       since_restart = 0;
@@ -193,56 +219,69 @@ class EnergyPdhg {
  private:
   // One iteration: the PDHG operator T, x+ = clip(x - tau/w (u + K^T y)), then
   // y+ = clip(y + w sigma (K (2 x+ - x) + b)), written to `step`; and the reflected Halpern
-  // iteration (Lu & Yang 2024, "Restarted Halpern PDHG for linear programming") in place,
-  // z <- (k+1)/(k+2) (2 T(z) - z) + 1/(k+2) z_0, k the iterations since the restart and z_0 the
-  // restart point. A column's z is replaced once T no longer needs it (the rows read only the
-  // extrapolated x), a row's right after its own update. T(z) itself is written to `step` only
-  // when `keep_step` (the iterations that check the gap). On the block engine's Andalusian energy
-  // 12,864 iterations where PDLP's restarts to the average took 16,128
-  // (docs/design/lp_backend.md, "Energy pdhg").
-  void Iterate(Point& z,
+  // iteration (Lu & Yang 2024, "Restarted Halpern PDHG for linear programming"),
+  // z <- lambda_k (2 T(z) - z) + (1 - lambda_k) z_0, k the iterations since the restart, z_0 the
+  // restart point. A row's z is updated in place right after its own step. z's x is never
+  // stored: the iteration keeps 2 T(x) - x in `reflected` (the rows read it), and the next
+  // iteration's column step forms its x from it and z_0 (z_0 itself right after a restart),
+  // which saves a pass over the columns. T(z) itself is written to `step` only when `keep_step`
+  // (the iterations that check the gap). On the block engine's Andalusian energy 12,864
+  // iterations where PDLP's restarts to the average took 16,128 (docs/design/lp_backend.md,
+  // "Energy pdhg").
+  void Iterate(std::vector<double>& z_y,
                const Point& anchor,
                std::int64_t k,
                double weight,
                bool keep_step,
                Point& step,
-               std::vector<double>& extrapolated) const {
-    const double lambda = (static_cast<double>(k) + 1.0) / (static_cast<double>(k) + 2.0);
-    ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t j = begin; j < end; ++j) {
-        const double x = tau_[j] == 0.0
-                             ? z.x[j]
-                             : std::clamp(z.x[j] - tau_[j] / weight * ReducedCost(j, z.y), 0.0, 1.0);
-        if (keep_step) step.x[j] = x;
-        extrapolated[j] = 2.0 * x - z.x[j];
-      }
-    }, kElementwiseChunk);
-    ForChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t r = begin; r < end; ++r) {
-        const std::uint32_t first = p_.row_offsets[r], last = p_.row_offsets[r + 1];
-        double kx = p_.Offset(r);
-        for (std::uint32_t i = first; i < last; ++i) {
-          kx += p_.row_signs[i] * extrapolated[p_.row_columns[i]];
-        }
-        const double y = std::clamp(
-            z.y[r] + weight * sigma_by_count_[last - first] * kx, p_.Lower(r), p_.upper[r]);
-        if (keep_step) step.y[r] = y;
-        z.y[r] = lambda * (2.0 * y - z.y[r]) + (1.0 - lambda) * anchor.y[r];
-      }
-    }, kElementwiseChunk);
-    // extrapolated = 2 T(x) - x: the reflection of x already.
-    ForChunks(p_.num_cols, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t j = begin; j < end; ++j) {
-        z.x[j] = lambda * extrapolated[j] + (1.0 - lambda) * anchor.x[j];
-      }
-    }, kElementwiseChunk);
+               std::vector<double>& reflected) const {
+    const double lambda = HalpernWeight(k);
+    const double previous = k == 0 ? 0.0 : HalpernWeight(k - 1);
+    ForChunks(
+        p_.num_cols,
+        [&](std::size_t begin, std::size_t end) {
+          for (std::size_t j = begin; j < end; ++j) {
+            const double z_x =
+                k == 0 ? anchor.x[j] : previous * reflected[j] + (1.0 - previous) * anchor.x[j];
+            const std::uint32_t count = p_.ColumnCount(j);
+            const double x =
+                count == 0
+                    ? z_x
+                    : std::clamp(
+                          z_x - step_by_count_[count] / weight * ReducedCost(j, z_y), 0.0, 1.0);
+            if (keep_step) step.x[j] = x;
+            reflected[j] = 2.0 * x - z_x;
+          }
+        },
+        kElementwiseChunk);
+    ForChunks(
+        p_.num_rows,
+        [&](std::size_t begin, std::size_t end) {
+          for (std::size_t r = begin; r < end; ++r) {
+            const std::uint32_t first = p_.row_offsets[r], last = p_.row_offsets[r + 1];
+            double kx = p_.Offset(r);
+            for (std::uint32_t i = first; i < last; ++i) {
+              kx += EntryTimes(p_.row_entries[i], reflected[EntryIndex(p_.row_entries[i])]);
+            }
+            const double y = std::clamp(
+                z_y[r] + weight * step_by_count_[last - first] * kx, p_.Lower(r), p_.upper[r]);
+            if (keep_step) step.y[r] = y;
+            z_y[r] = lambda * (2.0 * y - z_y[r]) + (1.0 - lambda) * anchor.y[r];
+          }
+        },
+        kElementwiseChunk);
+  }
+
+  // The Halpern weight lambda_k = (k + 1) / (k + 2).
+  static double HalpernWeight(std::int64_t k) {
+    return (static_cast<double>(k) + 1.0) / (static_cast<double>(k) + 2.0);
   }
 
   // (u + K^T y)_j: the primal gradient of column j, the reduced cost in the dual.
   double ReducedCost(std::size_t j, const std::vector<double>& y) const {
     double g = p_.unary[j];
     for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
-      g += p_.col_signs[k] * y[p_.col_rows[k]];
+      g += EntryTimes(p_.col_entries[k], y[EntryIndex(p_.col_entries[k])]);
     }
     return g;
   }
@@ -298,8 +337,8 @@ class EnergyPdhg {
   const LabelingOptions& options_;
   const RunContext& ctx_;
   SaddleProblem p_;
-  std::vector<double> tau_;
-  std::vector<double> sigma_by_count_;
+  // Primal and dual step of a column or row with that many entries (0: none).
+  std::vector<double> step_by_count_;
   double best_primal_ = 0.0;
   double best_dual_ = 0.0;
   std::vector<double> best_x_;
