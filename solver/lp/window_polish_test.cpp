@@ -45,15 +45,20 @@ testing::RandomEnergySpec Spec(std::size_t cells, std::uint64_t seed) {
   return spec;
 }
 
+WindowPolishOptions Windows(std::size_t cells, std::int64_t max_nodes, std::size_t max_windows) {
+  WindowPolishOptions options;
+  options.window_cells = cells;
+  options.max_nodes = max_nodes;
+  options.max_windows = max_windows;
+  return options;
+}
+
 TEST(WindowPolish, OneWindowOverAllFreeCellsFindsTheIntegralOptimum) {
   if (!CbcAvailable()) GTEST_SKIP() << "this build has no Cbc backend";
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const EnergyInput e = testing::RandomEnergy(Spec(14, seed));
     Start start = StartOf(e, seed);
-    WindowPolishOptions options;
-    options.window_cells = 64;
-    options.max_nodes = 100000;
-    options.max_windows = 10;
+    const WindowPolishOptions options = Windows(64, 100000, 10);
     const WindowPolishStats stats =
         PolishInWindows(e, start.relaxed, options, RunContext{}, start.labels);
     EXPECT_EQ(stats.windows, 1u) << seed;
@@ -68,10 +73,7 @@ TEST(WindowPolish, NeverRaisesTheEnergyAndKeepsFixedCells) {
     const EnergyInput e = testing::RandomEnergy(Spec(400, seed));
     Start start = StartOf(e, seed);
     const double before = EnergyOfLabels(e, start.labels);
-    WindowPolishOptions options;
-    options.window_cells = 12;
-    options.max_nodes = 50;
-    options.max_windows = 1000;
+    const WindowPolishOptions options = Windows(12, 50, 1000);
     const WindowPolishStats stats =
         PolishInWindows(e, start.relaxed, options, RunContext{}, start.labels);
     EXPECT_GT(stats.improved_windows, 0u) << seed;
@@ -96,10 +98,7 @@ TEST(WindowPolish, SameLabelsForAnyThreadCount) {
     spec.num_parity = 300;
     const EnergyInput e = testing::RandomEnergy(spec);
     const Start start = StartOf(e, seed);
-    WindowPolishOptions options;
-    options.window_cells = 4;
-    options.max_nodes = 50;
-    options.max_windows = 1000;
+    const WindowPolishOptions options = Windows(4, 50, 1000);
     RunContext serial;
     serial.num_threads = 1;
     std::vector<std::uint8_t> expected = start.labels;
