@@ -19,8 +19,8 @@ namespace linesurf::solver {
 namespace {
 
 constexpr const char* kWindowPolishStage = "solve_labeling";
-// A relaxed value this far from 0 and 1 makes its cell a seed: well above the error of the
-// first-order backend (pdhg stops at a relative 1e-4), whose cells are never exactly integral.
+// A relaxed value this far from 0 and 1 makes its cell a seed: the first-order backends stop at
+// a relative tolerance (pdhg 1e-4, pdhg-energy 1e-3), so their cells are never exactly integral.
 constexpr double kSeedDistance = 1e-3;
 
 // Windows solved from the same labels before their results are taken in order.
