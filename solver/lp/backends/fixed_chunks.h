@@ -50,10 +50,14 @@ double SumChunks(std::size_t n, const Fn& fn) {
 }
 
 /// Euclidean distance of two vectors of one length, summed over fixed chunks.
-inline double ChunkedDistance(const std::vector<double>& a, const std::vector<double>& b) {
+template <typename T>
+inline double ChunkedDistance(const std::vector<T>& a, const std::vector<T>& b) {
   return std::sqrt(SumChunks(a.size(), [&](std::size_t lo, std::size_t hi) {
     double s = 0.0;
-    for (std::size_t i = lo; i < hi; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+    for (std::size_t i = lo; i < hi; ++i) {
+      const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+      s += d * d;
+    }
     return s;
   }));
 }

