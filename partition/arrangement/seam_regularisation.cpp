@@ -401,106 +401,121 @@ bool ParallelFor(const RunContext& ctx, std::size_t n, Fn&& fn) {
   return !stopped.load();
 }
 
+// The edge pieces on block faces and block edges (out.edges, out.edges_with_dropped_cells): every
+// block's boundary edges, grouped by line, pieces along each line. Its temporaries (several
+// vectors per boundary edge) are gone before the vertices are built, which lowers the stage's
+// peak. Returns false when cancelled.
+bool AddSeamEdges(const BlockComplexes& cx, const RunContext& ctx, SeamRegularisation& out) {
+  std::vector<BoundaryEdge> edges;
+  {
+    std::vector<std::vector<BoundaryEdge>> per_block(cx.blocks.size());
+    if (!ParallelFor(ctx, cx.blocks.size(), [&](std::size_t b) {
+          per_block[b] = BoundaryEdges(cx, static_cast<std::uint32_t>(b));
+        })) {
+      return false;
+    }
+    std::size_t total = 0;
+    for (const auto& list : per_block) total += list.size();
+    edges.reserve(total);
+    for (auto& list : per_block) {
+      for (auto& e : list) edges.push_back(std::move(e));
+    }
+  }
+  const std::vector<std::array<std::uint64_t, 3>> line_keys = LineKeys(edges);
+  std::vector<std::size_t> order(edges.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return line_keys[a] < line_keys[b];
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> lines;  // ranges of `order`
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    while (j < order.size() && line_keys[order[j]] == line_keys[order[i]]) ++j;
+    lines.emplace_back(i, j);
+    i = j;
+  }
+  std::vector<std::vector<SeamParityGroup>> line_groups(lines.size());
+  std::vector<std::size_t> line_dropped(lines.size(), 0);
+  if (!ParallelFor(ctx, lines.size(), [&](std::size_t l) {
+        std::vector<const BoundaryEdge*> on_line;
+        for (std::size_t i = lines[l].first; i < lines[l].second; ++i) {
+          on_line.push_back(&edges[order[i]]);
+        }
+        const std::size_t around = line_keys[order[lines[l].first]][0] == 1 ? 2 : 4;
+        LinePieces(cx, on_line, around, line_groups[l], line_dropped[l]);
+      })) {
+    return false;
+  }
+  std::size_t pieces = 0;
+  for (const auto& groups : line_groups) pieces += groups.size();
+  out.edges.reserve(pieces);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    out.edges_with_dropped_cells += line_dropped[l];
+    for (auto& g : line_groups[l]) out.edges.push_back(std::move(g));
+  }
+  return true;
+}
+
+// The vertices on block faces, edges and corners (out.vertices): every point on block
+// boundaries named by a block or a seam facet, once. Returns false when cancelled.
+bool AddSeamVertices(const BlockComplexes& cx, const RunContext& ctx, SeamRegularisation& out) {
+  std::vector<RawVertex> raw;
+  for (const BlockComplex& block : cx.blocks) {
+    const CellComplex& k = block.complex;
+    for (std::size_t v = 0; v < k.NumVertices(); ++v) {
+      if (k.vertex_planes[VertexId(v)][0].index() >= kNumBoxPlanes) continue;  // off the box
+      raw.push_back({GlobalVertexKey(block, VertexId(v)), k.vertex_points[VertexId(v)]});
+    }
+  }
+  for (const SeamFace& face : cx.seams) {
+    for (const SeamFacet& f : face.facets) {
+      for (std::size_t i = 0; i < f.vertices.size(); ++i)
+        raw.push_back({f.vertices[i], f.points[i]});
+    }
+  }
+  std::stable_sort(
+      raw.begin(), raw.end(), [](const RawVertex& a, const RawVertex& b) { return a.key < b.key; });
+  raw.erase(std::unique(raw.begin(),
+                        raw.end(),
+                        [](const RawVertex& a, const RawVertex& b) { return a.key == b.key; }),
+            raw.end());
+  std::vector<SeamVertex> vertices(raw.size());
+  if (!ParallelFor(ctx, raw.size(), [&](std::size_t i) { vertices[i] = Canonical(cx, raw[i]); })) {
+    return false;
+  }
+  std::erase_if(vertices, [](const SeamVertex& v) { return v.blocks.empty(); });
+  std::stable_sort(vertices.begin(), vertices.end(), [](const SeamVertex& a, const SeamVertex& b) {
+    return a.key < b.key;
+  });
+  vertices.erase(
+      std::unique(vertices.begin(),
+                  vertices.end(),
+                  [](const SeamVertex& a, const SeamVertex& b) { return a.key == b.key; }),
+      vertices.end());
+  out.vertices.resize(vertices.size());
+  if (!ParallelFor(ctx, vertices.size(), [&](std::size_t i) {
+        std::vector<BlockCell> cells;
+        for (const std::uint32_t b : vertices[i].blocks) {
+          for (const CellId c : Star(cx, b, vertices[i].key)) cells.push_back({b, c});
+        }
+        bool dropped = false;
+        out.vertices[i] = SignedCells(cx, cells, vertices[i].through, dropped);
+      })) {
+    return false;
+  }
+  std::erase_if(out.vertices, [](const SeamParityGroup& g) { return g.cells.empty(); });
+  return true;
+}
+
 }  // namespace
 
 Expected<SeamRegularisation> ComputeSeamRegularisation(const BlockComplexes& cx,
                                                        const RunContext& ctx) noexcept {
   return CatchAll(kSeamRegularisationStage, [&]() -> SeamRegularisation {
     SeamRegularisation out;
-    const std::size_t num_blocks = cx.blocks.size();
-    const auto cancelled = [] {
-      return LinesurfException(Error{ErrorCode::kCancelled, kSeamRegularisationStage, "cancelled"});
-    };
-
-    // Edges: every block's boundary edges, grouped by line, pieces along each line.
-    std::vector<std::vector<BoundaryEdge>> per_block(num_blocks);
-    if (!ParallelFor(ctx, num_blocks, [&](std::size_t b) {
-          per_block[b] = BoundaryEdges(cx, static_cast<std::uint32_t>(b));
-        })) {
-      throw cancelled();
+    if (!AddSeamEdges(cx, ctx, out) || !AddSeamVertices(cx, ctx, out)) {
+      throw LinesurfException(Error{ErrorCode::kCancelled, kSeamRegularisationStage, "cancelled"});
     }
-    std::vector<BoundaryEdge> edges;
-    for (auto& list : per_block) {
-      for (auto& e : list) edges.push_back(std::move(e));
-    }
-    const std::vector<std::array<std::uint64_t, 3>> line_keys = LineKeys(edges);
-    std::vector<std::size_t> order(edges.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return line_keys[a] < line_keys[b];
-    });
-    std::vector<std::pair<std::size_t, std::size_t>> lines;  // ranges of `order`
-    for (std::size_t i = 0; i < order.size();) {
-      std::size_t j = i;
-      while (j < order.size() && line_keys[order[j]] == line_keys[order[i]]) ++j;
-      lines.emplace_back(i, j);
-      i = j;
-    }
-    std::vector<std::vector<SeamParityGroup>> line_groups(lines.size());
-    std::vector<std::size_t> line_dropped(lines.size(), 0);
-    if (!ParallelFor(ctx, lines.size(), [&](std::size_t l) {
-          std::vector<const BoundaryEdge*> on_line;
-          for (std::size_t i = lines[l].first; i < lines[l].second; ++i) {
-            on_line.push_back(&edges[order[i]]);
-          }
-          const std::size_t around = line_keys[order[lines[l].first]][0] == 1 ? 2 : 4;
-          LinePieces(cx, on_line, around, line_groups[l], line_dropped[l]);
-        })) {
-      throw cancelled();
-    }
-    for (std::size_t l = 0; l < lines.size(); ++l) {
-      out.edges_with_dropped_cells += line_dropped[l];
-      for (auto& g : line_groups[l]) out.edges.push_back(std::move(g));
-    }
-
-    // Vertices: every point on block boundaries named by a block or a seam facet, once.
-    std::vector<RawVertex> raw;
-    for (const BlockComplex& block : cx.blocks) {
-      const CellComplex& k = block.complex;
-      for (std::size_t v = 0; v < k.NumVertices(); ++v) {
-        if (k.vertex_planes[VertexId(v)][0].index() >= kNumBoxPlanes) continue;  // off the box
-        raw.push_back({GlobalVertexKey(block, VertexId(v)), k.vertex_points[VertexId(v)]});
-      }
-    }
-    for (const SeamFace& face : cx.seams) {
-      for (const SeamFacet& f : face.facets) {
-        for (std::size_t i = 0; i < f.vertices.size(); ++i)
-          raw.push_back({f.vertices[i], f.points[i]});
-      }
-    }
-    std::stable_sort(raw.begin(), raw.end(), [](const RawVertex& a, const RawVertex& b) {
-      return a.key < b.key;
-    });
-    raw.erase(std::unique(raw.begin(),
-                          raw.end(),
-                          [](const RawVertex& a, const RawVertex& b) { return a.key == b.key; }),
-              raw.end());
-    std::vector<SeamVertex> vertices(raw.size());
-    if (!ParallelFor(
-            ctx, raw.size(), [&](std::size_t i) { vertices[i] = Canonical(cx, raw[i]); })) {
-      throw cancelled();
-    }
-    std::erase_if(vertices, [](const SeamVertex& v) { return v.blocks.empty(); });
-    std::stable_sort(vertices.begin(),
-                     vertices.end(),
-                     [](const SeamVertex& a, const SeamVertex& b) { return a.key < b.key; });
-    vertices.erase(
-        std::unique(vertices.begin(),
-                    vertices.end(),
-                    [](const SeamVertex& a, const SeamVertex& b) { return a.key == b.key; }),
-        vertices.end());
-    out.vertices.resize(vertices.size());
-    if (!ParallelFor(ctx, vertices.size(), [&](std::size_t i) {
-          std::vector<BlockCell> cells;
-          for (const std::uint32_t b : vertices[i].blocks) {
-            for (const CellId c : Star(cx, b, vertices[i].key)) cells.push_back({b, c});
-          }
-          bool dropped = false;
-          out.vertices[i] = SignedCells(cx, cells, vertices[i].through, dropped);
-        })) {
-      throw cancelled();
-    }
-    std::erase_if(out.vertices, [](const SeamParityGroup& g) { return g.cells.empty(); });
     return out;
   });
 }
