@@ -122,7 +122,6 @@ struct BoundaryEdge {
   EdgeId edge;
   std::vector<PlaneKey> faces;     ///< sorted, 1 or 2
   std::vector<PlaneKey> carriers;  ///< input planes through the edge, sorted
-  std::vector<PlaneKey> planes;    ///< faces and carriers, sorted
   Vec3 p0 = Vec3::Zero();
   Vec3 p1 = Vec3::Zero();
 };
@@ -153,9 +152,6 @@ std::vector<BoundaryEdge> BoundaryEdges(const BlockComplexes& cx, std::uint32_t 
       std::sort(v->begin(), v->end());
       v->erase(std::unique(v->begin(), v->end()), v->end());
     }
-    edge.planes = edge.faces;
-    edge.planes.insert(edge.planes.end(), edge.carriers.begin(), edge.carriers.end());
-    std::sort(edge.planes.begin(), edge.planes.end());
     const auto& ends = k.edge_vertices[id];
     edge.p0 = k.vertex_points[ends[0]];
     edge.p1 = k.vertex_points[ends[1]];
@@ -244,7 +240,8 @@ void LinePieces(const BlockComplexes& cx,
       for (const CellId c : cx.blocks[e.block].complex.edge_cells[e.edge]) {
         cells.push_back({e.block, c});
       }
-      through.insert(through.end(), e.planes.begin(), e.planes.end());
+      through.insert(through.end(), e.faces.begin(), e.faces.end());
+      through.insert(through.end(), e.carriers.begin(), e.carriers.end());
     }
     if (cells.empty()) {
       flush();
