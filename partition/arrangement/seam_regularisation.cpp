@@ -399,9 +399,9 @@ bool ParallelFor(const RunContext& ctx, std::size_t n, Fn&& fn) {
 }
 
 // The edge pieces on block faces and block edges (out.edges, out.edges_with_dropped_cells): every
-// block's boundary edges, grouped by line, pieces along each line. Its temporaries (several
-// vectors per boundary edge) are gone before the vertices are built, which lowers the stage's
-// peak. Returns false when cancelled.
+// block's boundary edges, grouped by line, pieces along each line. Its temporaries (two
+// vectors per boundary edge, the per-line groups) are gone before the vertices are built, which
+// lowers the stage's peak. Returns false when cancelled.
 bool AddSeamEdges(const BlockComplexes& cx, const RunContext& ctx, SeamRegularisation& out) {
   std::vector<BoundaryEdge> edges;
   {
