@@ -83,7 +83,7 @@ ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
     if (!(w > 0.0)) continue;
     cols.clear();
     signs.clear();
-    std::int32_t k = 0;
+    std::int32_t k = energy.parity_constants[g];
     const auto cells = energy.ParityGroup(g);
     const auto nu = energy.ParitySigns(g);
     for (std::size_t i = 0; i < cells.size(); ++i) {

@@ -6,7 +6,7 @@
 ///  1. ReduceEnergy substitutes every fixed cell by its label. A pairwise term with one fixed
 ///     cell becomes a unary term (|x - 0| = x, |x - 1| = 1 - x on [0,1]); a structural group
 ///     holding a full cell vanishes, its empty cells drop out, and a group with one free cell
-///     becomes 1 - x; a parity group keeps k = sum of nu over its full cells as an offset,
+///     becomes 1 - x; a parity group keeps k = its constant + sum of nu over its full cells,
 ///     |nu x + k| with one free cell is linear on [0,1] (k is an integer) and folds too. Terms
 ///     without free cells and terms of zero weight go to the constant or away. What remains is
 ///     an energy over free cells only: unary coefficients, pairs, structural and parity groups

@@ -94,12 +94,14 @@ void EnergyInput::AddStructuralGroup(std::span<const CellId> cells, double weigh
 
 void EnergyInput::AddParityGroup(std::span<const CellId> cells,
                                  std::span<const std::int8_t> signs,
-                                 double weight) {
+                                 double weight,
+                                 std::int8_t constant) {
   LINESURF_ASSERT(cells.size() == signs.size());
   parity_cells.insert(parity_cells.end(), cells.begin(), cells.end());
   parity_signs.insert(parity_signs.end(), signs.begin(), signs.end());
   parity_offsets.push_back(static_cast<std::uint32_t>(parity_cells.size()));
   parity_weights.push_back(weight);
+  parity_constants.push_back(constant);
 }
 
 Status EnergyInput::Validate() const {
@@ -135,6 +137,9 @@ Status EnergyInput::Validate() const {
   if (message.empty() && parity_signs.size() != parity_cells.size()) {
     message = "parity: one sign per cell needed";
   }
+  if (message.empty() && parity_constants.size() != parity_weights.size()) {
+    message = "parity: one constant per group needed";
+  }
   if (message.empty()) message = CheckWeights("parity group", parity_weights);
   if (message.empty()) {
     for (std::size_t i = 0; i < parity_signs.size(); ++i) {
@@ -163,7 +168,7 @@ double EnergyInput::Evaluate(std::span<const double> x) const {
   for (std::size_t g = 0; g < NumParityGroups(); ++g) {
     const auto cells = ParityGroup(g);
     const auto signs = ParitySigns(g);
-    double sum = 0.0;
+    double sum = parity_constants[g];
     for (std::size_t i = 0; i < cells.size(); ++i) sum += signs[i] * x[cells[i].index()];
     energy += parity_weights[g] * std::abs(sum);
   }

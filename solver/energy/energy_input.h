@@ -7,7 +7,7 @@
 ///   E(x) = sum_c [ cost_if_empty_c * (1 - x_c) + cost_if_full_c * x_c ]            (unary)
 ///        + sum_pairs      w * |x_a - x_b|                                             (pairwise)
 ///        + sum_structural w * max(0, 1 - sum_{c in group} x_c)                        (structural)
-///        + sum_parity     w * |sum_{c in group} nu_c x_c|                             (parity)
+///        + sum_parity     w * |k + sum_{c in group} nu_c x_c|                         (parity)
 ///
 /// over x in {0,1}^cells with the fixed cells held at their label. Every weight is already
 /// multiplied by its user weight (lambda_vis, lambda_edge, ...): the solver sees one number per
@@ -69,10 +69,12 @@ struct EnergyInput {
   /// One weight per group: >= 0, finite.
   std::vector<double> structural_weights;
 
-  // ---- parity groups: weight * |sum_{c in group} nu_c x_c| ------------------------------------
+  // ---- parity groups: weight * |k + sum_{c in group} nu_c x_c| --------------------------------
   /// Edge and corner regularisation (Boulch et al. 2014) with the 2-colouring nu_c = +-1 of the
   /// cells around an edge (weight = lambda_edge * edge length) or a vertex (weight =
-  /// lambda_corner): 0 for a flat or no surface, 1 for a crease or corner, 2 for a checkerboard.
+  /// lambda_corner), k = 0: 0 for a flat or no surface, 1 for a crease or corner, 2 for a
+  /// checkerboard. The crease terms of structural segments are groups with k = -1
+  /// (engine/pipeline/segment_evidence.h).
   std::vector<std::uint32_t> parity_offsets{0};
   /// Cells of every group, concatenated; distinct within a group.
   std::vector<CellId> parity_cells;
@@ -80,6 +82,8 @@ struct EnergyInput {
   std::vector<std::int8_t> parity_signs;
   /// One weight per group: >= 0, finite.
   std::vector<double> parity_weights;
+  /// One constant k per group.
+  std::vector<std::int8_t> parity_constants;
 
   // ---- building ---------------------------------------------------------------------------------
   /// Appends a cell with its unary costs and boundary condition; returns its id.
@@ -89,9 +93,11 @@ struct EnergyInput {
   void ResizeCells(std::size_t num_cells);
   void AddPair(CellId a, CellId b, double weight);
   void AddStructuralGroup(std::span<const CellId> cells, double weight);
-  /// `signs[i]` is nu of `cells[i]` (+1 or -1).
-  void AddParityGroup(std::span<const CellId> cells, std::span<const std::int8_t> signs,
-                      double weight);
+  /// `signs[i]` is nu of `cells[i]` (+1 or -1); `constant` is k.
+  void AddParityGroup(std::span<const CellId> cells,
+                      std::span<const std::int8_t> signs,
+                      double weight,
+                      std::int8_t constant = 0);
 
   // ---- queries ----------------------------------------------------------------------------------
   [[nodiscard]] std::size_t NumCells() const { return cost_if_empty.size(); }
@@ -112,7 +118,8 @@ struct EnergyInput {
   }
 
   /// Checks sizes, offsets, cell ids in range, distinct cells within a term, finite costs,
-  /// weights >= 0 and finite, signs +-1. Names the first offending term. O(size).
+  /// weights >= 0 and finite, signs +-1, one constant per parity group. Names the first offending
+  /// term. O(size).
   [[nodiscard]] Status Validate() const;
 
   /// E(x) for a labelling x in [0,1]^cells (fixed cells must carry their label; relaxed values

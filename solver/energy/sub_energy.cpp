@@ -116,7 +116,10 @@ SubEnergy BuildSubEnergy(const EnergyInput& energy,
     if (t.kind == TermKind::kStructural) {
       sub.energy.AddStructuralGroup(cells, energy.structural_weights[t.index]);
     } else {
-      sub.energy.AddParityGroup(cells, energy.ParitySigns(t.index), energy.parity_weights[t.index]);
+      sub.energy.AddParityGroup(cells,
+                                energy.ParitySigns(t.index),
+                                energy.parity_weights[t.index],
+                                energy.parity_constants[t.index]);
     }
   }
   return sub;

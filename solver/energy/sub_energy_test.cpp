@@ -17,6 +17,7 @@ TEST(SubEnergy, DiffersFromTheFullEnergyByAConstantOverTheChosenCells) {
     spec.num_pairs = 60;
     spec.num_structural = 10;
     spec.num_parity = 12;
+    spec.parity_constants = seed % 2 == 0;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
     Rng rng(MixSeed(seed, RngStage::kSynth, 0x5b));

@@ -77,7 +77,7 @@ double TermEnergy(const EnergyInput& e, TermRef t, const std::vector<std::uint8_
   }
   const auto cells = e.ParityGroup(t.index);
   const auto nu = e.ParitySigns(t.index);
-  double sum = 0.0;
+  double sum = e.parity_constants[t.index];
   for (std::size_t i = 0; i < cells.size(); ++i) sum += nu[i] * double(labels[cells[i].index()]);
   return e.parity_weights[t.index] * std::abs(sum);
 }

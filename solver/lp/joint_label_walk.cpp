@@ -37,6 +37,7 @@ std::uint32_t JointLabelWalk::List(TermRef t, const std::vector<std::uint8_t>& l
     weights_.push_back(e_.structural_weights[t.index]);
   } else {
     weights_.push_back(e_.parity_weights[t.index]);
+    sum = e_.parity_constants[t.index];
     const auto cells = e_.ParityGroup(t.index);
     const auto nu = e_.ParitySigns(t.index);
     for (std::size_t i = 0; i < cells.size(); ++i) sum += nu[i] * x(cells[i]);

@@ -27,7 +27,8 @@ double BruteForceMinimum(const EnergyInput& e,
 TEST(JointLabelWalk, FindsTheBestJointLabellingOfUpToEightCells) {
   std::size_t improved = 0, kept = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    const EnergyInput e = testing::SmallRandomEnergy(seed);
+    // Parity groups with constants (as the crease terms) in every other energy.
+    const EnergyInput e = testing::SmallRandomEnergy(seed, seed % 2 == 0);
     const std::vector<CellId> free = e.FreeCells();
     const TermIncidence incidence(e, free);
     JointLabelWalk walk(e, free, incidence);

@@ -45,13 +45,17 @@ EnergyInput RandomEnergy(const RandomEnergySpec& spec) {
     const auto cells = DistinctCells(rng, n, size);
     std::vector<std::int8_t> signs(size);
     for (std::size_t i = 0; i < size; ++i) signs[i] = i % 2 == 0 ? 1 : -1;
-    e.AddParityGroup(cells, signs, rng.Uniform(0.1, 1.0));
+    const double weight = rng.Uniform(0.1, 1.0);
+    const auto constant =
+        static_cast<std::int8_t>(spec.parity_constants ? static_cast<int>(rng.Below(3)) - 1 : 0);
+    e.AddParityGroup(cells, signs, weight, constant);
   }
   return e;
 }
 
-EnergyInput SmallRandomEnergy(std::uint64_t seed) {
+EnergyInput SmallRandomEnergy(std::uint64_t seed, bool parity_constants) {
   RandomEnergySpec spec;
+  spec.parity_constants = parity_constants;
   spec.num_cells = 30;
   spec.num_pairs = 50;
   spec.num_structural = 8;

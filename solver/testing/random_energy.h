@@ -15,6 +15,8 @@ struct RandomEnergySpec {
   std::size_t num_parity = 4;
   /// Probability that a cell is fixed (half empty, half full).
   double fixed_fraction = 0.1;
+  /// Parity groups get a constant k in {-1, 0, 1} (one more draw per group) instead of 0.
+  bool parity_constants = false;
   std::uint64_t seed = 1;
 };
 
@@ -24,7 +26,7 @@ struct RandomEnergySpec {
 
 /// RandomEnergy of 30 cells, 50 pairs, 8 structural and 10 parity groups (default fixed
 /// fraction) for `seed`: the energy the bound and band tests compare with Clp's LP optimum.
-[[nodiscard]] EnergyInput SmallRandomEnergy(std::uint64_t seed);
+[[nodiscard]] EnergyInput SmallRandomEnergy(std::uint64_t seed, bool parity_constants = false);
 
 /// A grid of nx*ny*nz cells shaped like the labelling energy of a complex: full inside a few
 /// balls (textural evidence near their surface), pairwise visibility terms between face
