@@ -81,6 +81,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.planes == PlaneSource::kGiven, e.use_given_planes);
   EXPECT_EQ(o.weights.textural, e.energy.textural_weight);
   EXPECT_EQ(o.weights.structural, e.energy.structural_weight);
+  EXPECT_EQ(o.weights.crease, e.energy.crease_weight);
   EXPECT_EQ(o.weights.visibility, e.energy.visibility_weight);
   EXPECT_EQ(o.weights.edge, e.energy.edge_weight);
   EXPECT_EQ(o.weights.corner, e.energy.corner_weight);
@@ -134,6 +135,7 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
        }},
       {"support_gap", [](ReconstructOptions& o) { o.detection.support_gap = -1.0; }},
       {"weights.open_seam", [](ReconstructOptions& o) { o.weights.open_seam = 1e7; }},
+      {"weights.crease", [](ReconstructOptions& o) { o.weights.crease = -0.5; }},
       {"block_margin", [](ReconstructOptions& o) { o.block_margin = 65; }},
       {"box_margin", [](ReconstructOptions& o) { o.box_margin = 0.0; }},
       {"quality.fit_factor", [](ReconstructOptions& o) { o.quality.fit_factor = 0.0; }},

@@ -158,6 +158,11 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
        NestedInteger(&ReconstructOptions::detection, &DetectionParameters::block_max_segments)},
       {"weights.textural", LINESURF_C_REAL(weights.textural)},
       {"weights.structural", LINESURF_C_REAL(weights.structural)},
+      {"weights.crease",
+       [](ReconstructOptions& o, double v) {
+         o.weights.crease = v;
+         return true;
+       }},
       {"weights.visibility", LINESURF_C_REAL(weights.visibility)},
       {"weights.edge", LINESURF_C_REAL(weights.edge)},
       {"weights.corner", LINESURF_C_REAL(weights.corner)},

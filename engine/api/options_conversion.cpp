@@ -94,6 +94,7 @@ PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection, std:
 void SetEngineWeights(const EnergyWeights& weights, pipeline::EnergyOptions& energy) {
   energy.textural_weight = weights.textural;
   energy.structural_weight = weights.structural;
+  energy.crease_weight = weights.crease;
   energy.visibility_weight = weights.visibility;
   energy.edge_weight = weights.edge;
   energy.corner_weight = weights.corner;
@@ -166,6 +167,7 @@ Status ValidateWeights(const EnergyWeights& weights) {
   const std::pair<std::string_view, const char*> names[] = {
       {"textural_weight", "weights.textural"},
       {"structural_weight", "weights.structural"},
+      {"crease_weight", "weights.crease"},
       {"visibility_weight", "weights.visibility"},
       {"edge_weight", "weights.edge"},
       {"corner_weight", "weights.corner"},

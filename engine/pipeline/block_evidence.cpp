@@ -338,7 +338,8 @@ Expected<EvidenceResult> ComputeBlockEvidence(const BlockComplexes& complexes,
     EvidenceResult result;
     CheckEvidenceInput(scene, complexes.grid.box(), options, result.stats);
     const BlockSpace space(complexes);
-    IntegratedEvidence evidence = IntegrateSegments(space, scene, options, result.stats, ctx);
+    IntegratedEvidence evidence =
+        IntegrateSegments(space, scene, options, boundary, result.stats, ctx);
     AddIntegratedTerms(space, evidence, options, result.stats.sigma, result.energy);
     const std::vector<std::size_t> offsets = partition::GlobalCellOffsets(complexes);
     for (std::size_t b = 0; b < complexes.blocks.size(); ++b) {

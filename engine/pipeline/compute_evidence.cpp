@@ -70,14 +70,23 @@ void ApplyBoundary(const CellComplex& cx, BoundaryMode boundary, solver::EnergyI
 
 }  // namespace
 
+double CreaseWeight(const EnergyOptions& options, BoundaryMode boundary) {
+  if (options.crease_weight) return *options.crease_weight;
+  return boundary == BoundaryMode::kInterior ? kInteriorCreaseWeight : 0.0;
+}
+
 Status EnergyOptions::Validate() const {
   const auto bad = [](const char* field, const std::string& why) -> Status {
     return Error{ErrorCode::kInvalidOptions, "energy_options", std::string(field) + " " + why};
   };
   const std::pair<const char*, double> weights[] = {
-      {"textural_weight", textural_weight},   {"structural_weight", structural_weight},
-      {"visibility_weight", visibility_weight}, {"edge_weight", edge_weight},
-      {"corner_weight", corner_weight},       {"area_weight", area_weight},
+      {"textural_weight", textural_weight},
+      {"structural_weight", structural_weight},
+      {"crease_weight", crease_weight.value_or(0.0)},
+      {"visibility_weight", visibility_weight},
+      {"edge_weight", edge_weight},
+      {"corner_weight", corner_weight},
+      {"area_weight", area_weight},
       {"viewpoint_prior_weight", viewpoint_prior_weight},
       {"open_seam_weight", open_seam_weight}};
   for (const auto& [name, w] : weights) {
@@ -137,7 +146,8 @@ Expected<EvidenceResult> ComputeEvidence(const CellComplex& cx, const Scene& sce
     EvidenceResult result;
     CheckEvidenceInput(scene, cx.box, options, result.stats);
     const ComplexSpace space(cx);
-    IntegratedEvidence evidence = IntegrateSegments(space, scene, options, result.stats, ctx);
+    IntegratedEvidence evidence =
+        IntegrateSegments(space, scene, options, boundary, result.stats, ctx);
     AddIntegratedTerms(space, evidence, options, result.stats.sigma, result.energy);
     AddComplexRegularisation(cx, options, result.stats.sigma, 0, result.energy);
     ApplyBoundary(cx, boundary, result.energy, result.stats);

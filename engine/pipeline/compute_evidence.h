@@ -11,6 +11,10 @@
 ///  - structural (2 planes, segment projected onto P1 ∩ P2): the four quadrant cells around the
 ///    crease except the one facing v form one group paying w_str * length / (K sigma) *
 ///    max(0, 1 - sum x) (identical groups are merged);
+///  - crease (same sample and view; CreaseWeight: interior scenes only by default): with A, B the
+///    cells across P1 and across P2 from the one facing v and D the cell across both, the flat
+///    labellings through the crease pay w_crease * length / (K sigma views) * x_D |x_A - x_B|,
+///    written as parity groups with constant -1 (segment_evidence.h, CreaseEntry);
 ///  - visibility: the sight ray from v to the sample (ending in the cell in front of the segment,
 ///    so facets the segment lies on are exempt) adds w_vis * length / (K sigma) to every facet it
 ///    crosses: a pairwise |x_a - x_b| term per facet. Segments without planes count here too;
@@ -41,6 +45,12 @@ struct EnergyOptions {
   double textural_weight = 1.0;
   /// Weight of the structural primitive term (>= 0). Paper: 1 (the reference's -cp).
   double structural_weight = 1.0;
+  /// Weight of the crease term of structural segments (>= 0), per length / sigma and shared by
+  /// the segment's views: a structural segment says the surface turns at its crease, so the
+  /// labellings that put it on a flat surface of one of its planes pay this (the paper's
+  /// structural term only asks that one cell around the crease be full; 0 = the paper's energy).
+  /// Unset: CreaseWeight's default for the boundary mode.
+  std::optional<double> crease_weight;
   /// Visibility weight lambda_vis (>= 0). 1, as the reference's Andalusian demo (paper: 0.1):
   /// at 0.1 cells behind a lone textural segment that few sight rays cross stay full (slabs and
   /// fragments on Andalusian, docs/results.md); measured better on every synthetic scene too.
@@ -97,8 +107,21 @@ enum class BoundaryMode {
   kNone,      ///< no cell is fixed (tests)
 };
 
+/// The crease weight of an interior scene when none is given. In a scene seen from inside, most
+/// structural segments are concave room corners, where the paper's term is satisfied by the floor
+/// alone and an untextured wall between two rooms vanishes; 0.2 brings it back without costing
+/// the other scenes more than seed noise (docs/results.md). Exterior scenes get 0: facade lines
+/// that only happen to be coplanar (sills, storey bands) give segments a second, false plane,
+/// and a crease term there steps the walls at any weight that helps the interiors.
+inline constexpr double kInteriorCreaseWeight = 0.2;
+
+/// The crease weight used under `boundary`: the given one, else kInteriorCreaseWeight in an
+/// interior scene and 0 otherwise.
+[[nodiscard]] double CreaseWeight(const EnergyOptions& options, BoundaryMode boundary);
+
 struct EvidenceStats {
-  double sigma = 0.0;  ///< the scale actually used
+  double sigma = 0.0;                               ///< the scale actually used
+  double crease_weight = 0.0;                       ///< the crease weight actually used
   std::size_t segments_with_planes[3] = {0, 0, 0};  ///< segments on 0, 1, 2 planes
   std::size_t observations = 0;
   std::size_t samples = 0;                   ///< segment samples (all observations)

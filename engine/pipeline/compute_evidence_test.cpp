@@ -109,6 +109,45 @@ TEST(ComputeEvidence, StructuralSegmentGroupsTheCellsNotFacingTheView) {
   EXPECT_NEAR(total, 1.2, 1e-6);
 }
 
+TEST(ComputeEvidence, CreaseTermChargesOnlyTheFlatLabellingsThroughTheSegment) {
+  const GridComplexForTest g(4, 4, 4);
+  const Scene scene =
+      OneSegmentScene({Vec3(2, 2, 1.2), Vec3(2, 2, 1.8)},
+                      {Plane3{Vec3(2, 0, 0), Vec3::UnitX()}, Plane3{Vec3(0, 2, 0), Vec3::UnitY()}},
+                      Vec3(0.5, 0.5, 1.5));
+  EnergyOptions with = UnitOptions();
+  with.crease_weight = 0.5;
+  EnergyOptions without = UnitOptions();
+  without.crease_weight = 0.0;
+  const EvidenceResult r = Compute(g, scene, with);
+  const EvidenceResult paper = Compute(g, scene, without);
+  EXPECT_EQ(r.stats.crease_weight, 0.5);
+  // Across x = 2, across y = 2, across both; the cell facing the view (1, 1, 1) stays empty.
+  const CellId a = g.Cell(2, 1, 1), b = g.Cell(1, 2, 1), d = g.Cell(2, 2, 1);
+  for (int code = 0; code < 8; ++code) {
+    std::vector<std::uint8_t> labels(g.complex().NumCells(), 0);
+    const int xa = code & 1, xb = (code >> 1) & 1, xd = (code >> 2) & 1;
+    labels[a.index()] = xa;
+    labels[b.index()] = xb;
+    labels[d.index()] = xd;
+    const bool flat = xd == 1 && xa != xb;  // the surface is x = 2 or y = 2 through the crease
+    const double extra = r.energy.Evaluate(std::span<const std::uint8_t>(labels)) -
+                         paper.energy.Evaluate(std::span<const std::uint8_t>(labels));
+    EXPECT_NEAR(extra, flat ? 0.5 * 0.6 : 0.0, 1e-6) << "labels (a, b, d) " << xa << xb << xd;
+  }
+}
+
+TEST(ComputeEvidence, CreaseWeightDefaultsByTheBoundary) {
+  EnergyOptions o;
+  EXPECT_EQ(CreaseWeight(o, BoundaryMode::kInterior), kInteriorCreaseWeight);
+  EXPECT_EQ(CreaseWeight(o, BoundaryMode::kExterior), 0.0);
+  EXPECT_EQ(CreaseWeight(o, BoundaryMode::kNone), 0.0);
+  o.crease_weight = 0.7;
+  EXPECT_EQ(CreaseWeight(o, BoundaryMode::kExterior), 0.7);
+  o.crease_weight = -1.0;
+  EXPECT_FALSE(o.Validate());
+}
+
 TEST(ComputeEvidence, SegmentsWithoutPlanesStillGiveVisibility) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene =

@@ -332,6 +332,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       stats.segments_with_planes[k] = evidence.stats.segments_with_planes[k];
     }
     stats.sigma = evidence.stats.sigma;
+    stats.crease_weight = evidence.stats.crease_weight;
     stats.pair_terms = evidence.energy.NumPairs();
     stats.structural_groups = evidence.energy.NumStructuralGroups();
     stats.parity_groups = evidence.energy.NumParityGroups();

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 namespace linesurf::pipeline {
 namespace {
@@ -38,11 +39,17 @@ void AtomicAdd(std::vector<std::int64_t>& v, std::size_t i, std::int64_t w) {
   std::atomic_ref<std::int64_t>(v[i]).fetch_add(w, std::memory_order_relaxed);
 }
 
+/// The group terms found in one chunk of segments.
+struct ChunkGroups {
+  std::vector<StructuralEntry> structural;
+  std::vector<CreaseEntry> creases;
+};
+
 struct Accumulators {
   std::vector<std::int64_t> cost_if_empty;
   std::vector<std::int64_t> cost_if_full;
   std::vector<std::int64_t> facet_weight;
-  std::vector<std::vector<StructuralEntry>> structural;  ///< per chunk
+  std::vector<ChunkGroups> groups;  ///< per chunk
   std::atomic<std::size_t> samples{0}, outside{0}, grazing{0}, walks{0}, crossings{0},
       parallel_creases{0};
 };
@@ -54,6 +61,7 @@ struct Context {
   const EnergyOptions& options;
   const IdVector<ViewpointId, CellId>& viewpoint_cells;
   double sigma = 1.0;
+  double crease_weight = 0.0;
   double offset = 0.0;
   Accumulators& acc;
 };
@@ -164,11 +172,8 @@ void AddTextural(const Context& c, SegmentId s, const Plane3& plane, double leng
 }
 
 /// Structural evidence and visibility of segment `s` projected onto the crease p1 ∩ p2.
-void AddStructural(const Context& c,
-                   SegmentId s,
-                   const Plane3& p1,
-                   const Plane3& p2,
-                   std::vector<StructuralEntry>& out) {
+void AddStructural(
+    const Context& c, SegmentId s, const Plane3& p1, const Plane3& p2, ChunkGroups& out) {
   const Segment3& seg = c.scene.segments[s];
   const Vec3& n1 = p1.normal;
   const Vec3& n2 = p2.normal;
@@ -199,8 +204,11 @@ void AddStructural(const Context& c,
   const std::int32_t k_samples = NumSamples(c, length);
   const double per_sample = length / (k_samples * c.sigma);
   const std::int64_t w_str = ToFixed(c.options.structural_weight * per_sample);
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
   const auto views = c.scene.observations[s];
+  // Per segment, shared by its views: the crease is a property of the segment.
+  const std::int64_t w_crease =
+      views.empty() ? 0 : ToFixed(c.crease_weight * per_sample / views.size());
+  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
   std::array<CellId, 4> previous{};
   for (std::int32_t k = 0; k < k_samples; ++k) {
     const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
@@ -242,7 +250,12 @@ void AddStructural(const Context& c,
           }
         }
         entry.weight = w_str;
-        out.push_back(entry);
+        out.structural.push_back(entry);
+      }
+      if (count == 3 && w_crease != 0 && cells[facing].IsValid()) {
+        CreaseEntry crease{{cells[facing ^ 1], cells[facing ^ 2]}, cells[facing ^ 3], w_crease};
+        if (crease.across[1] < crease.across[0]) std::swap(crease.across[0], crease.across[1]);
+        out.creases.push_back(crease);
       }
       AddSightRay(c, v, points[facing], cells[facing], w_vis);
     }
@@ -269,7 +282,7 @@ void AddVisibilityOnly(const Context& c, SegmentId s) {
   }
 }
 
-void ProcessSegment(const Context& c, SegmentId s, std::vector<StructuralEntry>& structural) {
+void ProcessSegment(const Context& c, SegmentId s, ChunkGroups& groups) {
   const PlaneMembership membership =
       c.scene.HasMemberships() ? c.scene.memberships[s] : PlaneMembership{};
   if (membership.count == 0) {
@@ -297,7 +310,35 @@ void ProcessSegment(const Context& c, SegmentId s, std::vector<StructuralEntry>&
     AddTextural(c, s, p2, 1.0);
     return;
   }
-  AddStructural(c, s, p1, p2, structural);
+  AddStructural(c, s, p1, p2, groups);
+}
+
+/// The entries of every chunk's `member`, sorted by `key` and with identical keys merged. The
+/// sort is parallel and unstable, but merged weights are integer sums, so the order of addition
+/// does not matter.
+template <typename Entry, typename Key>
+std::vector<Entry> MergeChunks(std::vector<ChunkGroups>& chunks,
+                               std::vector<Entry> ChunkGroups::*member,
+                               Key key,
+                               const RunContext& ctx) {
+  std::vector<Entry> all;
+  for (ChunkGroups& chunk : chunks) {
+    all.insert(all.end(), (chunk.*member).begin(), (chunk.*member).end());
+    std::vector<Entry>().swap(chunk.*member);
+  }
+  RunInArena(ctx, [&] {
+    tbb::parallel_sort(
+        all.begin(), all.end(), [&](const Entry& x, const Entry& y) { return key(x) < key(y); });
+  });
+  std::vector<Entry> merged;
+  for (std::size_t i = 0; i < all.size();) {
+    Entry sum = all[i];
+    std::size_t j = i + 1;
+    for (; j < all.size() && key(all[j]) == key(all[i]); ++j) sum.weight += all[j].weight;
+    merged.push_back(sum);
+    i = j;
+  }
+  return merged;
 }
 
 }  // namespace
@@ -348,14 +389,16 @@ void CheckEvidenceInput(const Scene& scene,
 IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
                                      const Scene& scene,
                                      const EnergyOptions& options,
+                                     BoundaryMode boundary,
                                      EvidenceStats& stats,
                                      const RunContext& ctx) {
+  stats.crease_weight = CreaseWeight(options, boundary);
   Accumulators acc;
   acc.cost_if_empty.assign(space.NumCells(), 0);
   acc.cost_if_full.assign(space.NumCells(), 0);
   acc.facet_weight.assign(space.NumFacets(), 0);
   const std::size_t num_chunks = (scene.NumSegments() + kSegmentChunk - 1) / kSegmentChunk;
-  acc.structural.resize(num_chunks);
+  acc.groups.resize(num_chunks);
   IdVector<ViewpointId, CellId> viewpoint_cells(scene.viewpoints.size(), CellId::Invalid());
   const Box3& box = space.box();
   const Context c{space,
@@ -363,6 +406,7 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
                   options,
                   viewpoint_cells,
                   stats.sigma,
+                  stats.crease_weight,
                   kSideOffsetRelative * box.Extent().norm(),
                   acc};
   std::atomic<bool> stopped{false};
@@ -387,7 +431,7 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
             }
             const std::size_t end = std::min(scene.NumSegments(), (chunk + 1) * kSegmentChunk);
             for (std::size_t s = chunk * kSegmentChunk; s < end; ++s) {
-              ProcessSegment(c, SegmentId(s), acc.structural[chunk]);
+              ProcessSegment(c, SegmentId(s), acc.groups[chunk]);
             }
             const std::size_t finished = done.fetch_add(1, std::memory_order_relaxed) + 1;
             ctx.ReportProgress(kSegmentEvidenceStage,
@@ -416,26 +460,13 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
   stats.parallel_creases = acc.parallel_creases.load();
 
   IntegratedEvidence out;
-  // Structural groups: concatenated in chunk order, sorted by cells (in parallel: unstable, but
-  // identical groups are merged with integer sums, so the order of addition does not matter).
-  std::vector<StructuralEntry> all;
-  for (auto& chunk : acc.structural) {
-    all.insert(all.end(), chunk.begin(), chunk.end());
-    std::vector<StructuralEntry>().swap(chunk);
-  }
-  RunInArena(ctx, [&] {
-    tbb::parallel_sort(
-        all.begin(), all.end(), [](const StructuralEntry& x, const StructuralEntry& y) {
-          return x.cells < y.cells;
-        });
-  });
-  for (std::size_t i = 0; i < all.size();) {
-    StructuralEntry merged{all[i].cells, 0};
-    std::size_t j = i;
-    for (; j < all.size() && all[j].cells == all[i].cells; ++j) merged.weight += all[j].weight;
-    out.structural.push_back(merged);
-    i = j;
-  }
+  out.structural = MergeChunks(
+      acc.groups, &ChunkGroups::structural, [](const StructuralEntry& e) { return e.cells; }, ctx);
+  out.creases = MergeChunks(
+      acc.groups,
+      &ChunkGroups::creases,
+      [](const CreaseEntry& e) { return std::make_tuple(e.across[0], e.across[1], e.opposite); },
+      ctx);
   out.cost_if_empty = std::move(acc.cost_if_empty);
   out.cost_if_full = std::move(acc.cost_if_full);
   out.facet_weight = std::move(acc.facet_weight);
@@ -468,6 +499,16 @@ void AddIntegratedTerms(const EvidenceSpace& space,
       if (cell.IsValid()) group.push_back(cell);
     }
     energy.AddStructuralGroup(group, FromFixed(entry.weight));
+  }
+  constexpr std::array<std::int8_t, 3> kCreaseSigns{1, 1, -1};
+  for (const CreaseEntry& entry : evidence.creases) {
+    const double weight = FromFixed(entry.weight);
+    const auto [a, b] = entry.across;
+    const std::array<CellId, 3> a_first{a, entry.opposite, b};
+    const std::array<CellId, 3> b_first{b, entry.opposite, a};
+    energy.AddParityGroup(a_first, kCreaseSigns, 0.5 * weight, -1);
+    energy.AddParityGroup(b_first, kCreaseSigns, 0.5 * weight, -1);
+    energy.cost_if_empty[entry.opposite] -= weight;
   }
 }
 

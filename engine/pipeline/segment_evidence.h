@@ -60,6 +60,19 @@ struct StructuralEntry {
   std::int64_t weight = 0;
 };
 
+/// The crease term of a structural segment seen from one view, on the cells across each of its
+/// planes from the cell facing the view (`across`, sorted) and the cell across both (`opposite`):
+/// weight * x_opposite * |x_across[0] - x_across[1]| on 0/1 labels, i.e. the surface lies flat on
+/// one plane through the crease. AddIntegratedTerms writes it as two parity groups
+/// |x_a + x_d - x_b - 1| / 2 (one per order of the across cells) and a unary reward
+/// -weight * (1 - x_opposite), whose sum is exactly that on 0/1 labels and is its convex
+/// extension max(0, x_a + x_d - x_b - 1) + max(0, x_b + x_d - x_a - 1) on [0,1].
+struct CreaseEntry {
+  std::array<CellId, 2> across{};
+  CellId opposite;
+  std::int64_t weight = 0;
+};
+
 /// The evidence of all segments and viewpoints, in fixed point over the space's ids.
 struct IntegratedEvidence {
   std::vector<std::int64_t> cost_if_empty;
@@ -67,6 +80,8 @@ struct IntegratedEvidence {
   std::vector<std::int64_t> facet_weight;
   /// Sorted by cells, identical groups merged.
   std::vector<StructuralEntry> structural;
+  /// Sorted by cells, identical terms merged.
+  std::vector<CreaseEntry> creases;
   IdVector<ViewpointId, CellId> viewpoint_cells;
 };
 
@@ -78,16 +93,18 @@ void CheckEvidenceInput(const Scene& scene,
                         EvidenceStats& stats);
 
 /// Integrates every segment and viewpoint over `space` (segments in parallel in an arena of
-/// ctx.num_threads) and fills the sample and walk counts of `stats`. Throws LinesurfException
+/// ctx.num_threads) and fills the crease weight (CreaseWeight under `boundary`) and the sample
+/// and walk counts of `stats`. Throws LinesurfException
 /// (kCancelled).
 [[nodiscard]] IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
                                                    const Scene& scene,
                                                    const EnergyOptions& options,
+                                                   BoundaryMode boundary,
                                                    EvidenceStats& stats,
                                                    const RunContext& ctx);
 
-/// Unary costs, one pair term per facet of the space with weight (visibility plus area), and
-/// the structural groups, into `energy` (resized to the space's cells).
+/// Unary costs, one pair term per facet of the space with weight (visibility plus area), the
+/// structural groups and the crease terms, into `energy` (resized to the space's cells).
 void AddIntegratedTerms(const EvidenceSpace& space,
                         const IntegratedEvidence& evidence,
                         const EnergyOptions& options,

@@ -73,6 +73,7 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;
   j["sigma"] = s.sigma;
+  j["crease_weight"] = s.crease_weight;
   j["epsilon"] = EpsilonJson(s.epsilon);
   if (s.quality_measured) j["quality"] = SurfaceQualityJson(s.quality);
   // A lower bound of -infinity (none known) and its gap are null.
@@ -196,6 +197,8 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
               "Boundary: box cells empty (exterior), full (interior), or decided");
   r.Add("w-textural", w.textural, "Textural weight");
   r.Add("w-structural", w.structural, "Structural weight");
+  r.Add(
+      "w-crease", w.crease, "Crease weight (default: 0.2 in interior scenes, 0 in exterior ones)");
   r.Add("w-visibility", w.visibility, "Visibility weight");
   r.Add("w-edge", w.edge, "Edge regularisation weight");
   r.Add("w-corner", w.corner, "Corner regularisation weight");

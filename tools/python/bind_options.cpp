@@ -97,6 +97,7 @@ void BindOptions(py::module_& m) {
   OptionsClass<W>(m, "EnergyWeights", "Weights of the energy terms (docs/reconstruction.md).")
       .Field("textural", &W::textural, "textural primitive term (>= 0)")
       .Field("structural", &W::structural, "structural primitive term (>= 0)")
+      .Field("crease", &W::crease, "crease term (>= 0); None = 0.2 interior, 0 exterior")
       .Field("visibility", &W::visibility, "visibility lambda_vis (>= 0)")
       .Field("edge", &W::edge, "edge regularisation (>= 0)")
       .Field("corner", &W::corner, "corner regularisation (>= 0)")

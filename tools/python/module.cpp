@@ -108,6 +108,7 @@ py::dict ReportOf(const ReconstructStats& stats) {
   LINESURF_REPORT(scene_mode);
   LINESURF_REPORT(scene_mode_reason);
   LINESURF_REPORT(sigma);
+  LINESURF_REPORT(crease_weight);
   LINESURF_REPORT(pair_terms);
   LINESURF_REPORT(structural_groups);
   LINESURF_REPORT(parity_groups);

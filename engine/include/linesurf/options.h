@@ -112,6 +112,12 @@ struct EnergyWeights {
   double textural = 1.0;
   /// Structural primitive term (>= 0; paper: 1, the reference's -cp).
   double structural = 1.0;
+  /// Crease term of structural segments (>= 0): a structural segment on a surface that lies flat
+  /// through its crease pays this, per length / sigma, shared by the segment's views (0 = the
+  /// paper's energy). Unset: 0.2 in an interior scene, 0 in an exterior one, where lines that
+  /// only happen to be coplanar (a row of sills on four walls) make false creases
+  /// (docs/reconstruction.md, measured in docs/results.md).
+  std::optional<double> crease;
   /// Visibility lambda_vis (>= 0; 1, the reference's Andalusian demo; paper: 0.1, which leaves
   /// slabs and fragments on Andalusian: docs/results.md).
   double visibility = 1.0;

@@ -101,6 +101,7 @@ struct ReconstructStats {
   std::string scene_mode;         ///< "exterior" or "interior" (resolved)
   std::string scene_mode_reason;  ///< why, for SceneMode::kAuto
   double sigma = 0.0;             ///< the scale used
+  double crease_weight = 0.0;     ///< the crease weight used (resolved for the scene mode)
   std::size_t pair_terms = 0;
   std::size_t structural_groups = 0;
   std::size_t parity_groups = 0;

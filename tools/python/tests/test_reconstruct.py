@@ -90,8 +90,10 @@ class ReconstructHouse(unittest.TestCase):
 
     def test_options_reach_the_run(self):
         r = linesurf.reconstruct(self.scene, scene_mode="exterior", sigma=0.25,
-                                 solver={"backend": "clp"}, weights={"visibility": 0.2})
+                                 solver={"backend": "clp"},
+                                 weights={"visibility": 0.2, "crease": 0.3})
         self.assertEqual(r.report["sigma"], 0.25)
+        self.assertEqual(r.report["crease_weight"], 0.3)
         self.assertEqual(r.report["solver_backend"], "clp")
 
     def test_given_planes_reproduce_the_mesh(self):
