@@ -106,7 +106,9 @@ NumberSetter NestedInteger(S linesurf::ReconstructOptions::*nested, T S::*field)
   };
 }
 
-NumberSetter Real(double& (*field)(linesurf::ReconstructOptions&)) {
+/// A real field, plain or optional: `field(options)` is a reference to it.
+template <typename Field>
+NumberSetter Real(Field field) {
   return [field](linesurf::ReconstructOptions& o, double v) {
     field(o) = v;
     return true;
@@ -121,8 +123,7 @@ NumberSetter Flag(bool linesurf::ReconstructOptions::*field) {
   };
 }
 
-#define LINESURF_C_REAL(path) \
-  Real([](linesurf::ReconstructOptions& o) -> double& { return o.path; })
+#define LINESURF_C_REAL(path) Real([](linesurf::ReconstructOptions & o) -> auto& { return o.path; })
 
 /// Every numeric field of ReconstructOptions by its C++ path.
 const std::map<std::string_view, NumberSetter>& NumberSetters() {
@@ -158,22 +159,14 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
        NestedInteger(&ReconstructOptions::detection, &DetectionParameters::block_max_segments)},
       {"weights.textural", LINESURF_C_REAL(weights.textural)},
       {"weights.structural", LINESURF_C_REAL(weights.structural)},
-      {"weights.crease",
-       [](ReconstructOptions& o, double v) {
-         o.weights.crease = v;
-         return true;
-       }},
+      {"weights.crease", LINESURF_C_REAL(weights.crease)},
       {"weights.visibility", LINESURF_C_REAL(weights.visibility)},
       {"weights.edge", LINESURF_C_REAL(weights.edge)},
       {"weights.corner", LINESURF_C_REAL(weights.corner)},
       {"weights.area", LINESURF_C_REAL(weights.area)},
       {"weights.viewpoint_prior", LINESURF_C_REAL(weights.viewpoint_prior)},
       {"weights.open_seam", LINESURF_C_REAL(weights.open_seam)},
-      {"sigma",
-       [](ReconstructOptions& o, double v) {
-         o.sigma = v;
-         return true;
-       }},
+      {"sigma", LINESURF_C_REAL(sigma)},
       {"samples_per_sigma", LINESURF_C_REAL(samples_per_sigma)},
       {"structural_as_textural", Flag(&ReconstructOptions::structural_as_textural)},
       {"solver.time_limit_seconds", LINESURF_C_REAL(solver.time_limit_seconds)},

@@ -156,6 +156,17 @@ TEST(CApi, BlockOptionsAreCheckedByTheFacade) {
   linesurf_options_free(options);
 }
 
+TEST(CApi, OptionalRealsAreSetAndCheckedByTheFacade) {
+  linesurf_options* options = linesurf_options_create();
+  ASSERT_NE(options, nullptr);
+  ASSERT_EQ(linesurf_options_set_number(options, "weights.crease", -0.5, nullptr), LINESURF_OK);
+  EXPECT_EQ(ReconstructMessage(options).rfind("options: weights.crease", 0), 0u);
+  ASSERT_EQ(linesurf_options_set_number(options, "weights.crease", 0.2, nullptr), LINESURF_OK);
+  ASSERT_EQ(linesurf_options_set_number(options, "sigma", -1.0, nullptr), LINESURF_OK);
+  EXPECT_EQ(ReconstructMessage(options).rfind("options: sigma", 0), 0u);
+  linesurf_options_free(options);
+}
+
 /// The example house as a C scene, with C options for an exterior scene (the C++ side of the
 /// comparisons uses SceneMode::kExterior); both freed at the end of the test.
 struct CHouse {

@@ -94,8 +94,7 @@ void CheckEvidenceInput(const Scene& scene,
 
 /// Integrates every segment and viewpoint over `space` (segments in parallel in an arena of
 /// ctx.num_threads) and fills the crease weight (CreaseWeight under `boundary`) and the sample
-/// and walk counts of `stats`. Throws LinesurfException
-/// (kCancelled).
+/// and walk counts of `stats`. Throws LinesurfException (kCancelled).
 [[nodiscard]] IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
                                                    const Scene& scene,
                                                    const EnergyOptions& options,
