@@ -159,16 +159,27 @@ class EnergyPdhg {
   LpSolution Run() {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = p_.num_cols, m = p_.num_rows;
-    // Preconditioned steps (Pock & Chambolle 2011, alpha = 1, |K_ij| = 1): 1 / entries, for a
-    // column and a row alike; one value per entry count, so no step is streamed per element.
+    // Preconditioned steps (Pock & Chambolle 2011, alpha = 1) for the multipliers scaled to
+    // their boxes, eta_r = y_r / w_r: that saddle's matrix W K has entries +-w_r, so a column's
+    // step is 1 / (sum of its terms' weights) and a row's is 1 / (w_r entries), which in y is
+    // w_r / entries. Every term's multiplier then crosses its box in about as many iterations
+    // whatever its weight (Andalusian: 3,072 iterations where steps of 1 / entries took 9,536).
     std::uint32_t max_count = 0;
     for (std::size_t r = 0; r < m; ++r) {
       max_count = std::max(max_count, p_.row_offsets[r + 1] - p_.row_offsets[r]);
     }
-    for (std::size_t j = 0; j < n; ++j) max_count = std::max(max_count, p_.ColumnCount(j));
-    step_by_count_.assign(max_count + 1, 0.0);
+    dual_step_by_count_.assign(max_count + 1, 0.0);
     for (std::uint32_t count = 1; count <= max_count; ++count) {
-      step_by_count_[count] = kStepFactor / count;
+      dual_step_by_count_[count] = kStepFactor / count;
+    }
+    primal_step_.assign(n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+      double weights = 0.0;
+      for (std::uint32_t k = p_.col_offsets[j]; k < p_.col_offsets[j + 1]; ++k) {
+        weights += static_cast<double>(p_.upper[EntryIndex(p_.col_entries[k])]);
+      }
+      // A column whose terms all weigh 0 follows its unary coefficient at a unit step.
+      primal_step_[j] = kStepFactor / (weights > 0.0 ? weights : 1.0);
     }
     // The restart point z_0. A column in no term: its optimum is read off its unary coefficient.
     Point anchor{std::vector<double>(n, 0.0), std::vector<Stored>(m, Stored{0})};
@@ -213,7 +224,7 @@ class EnergyPdhg {
       if (!restart) continue;
       // Restart the Halpern sequence at the step's point, with a rebalanced primal weight.
       weight = SmoothedPrimalWeight(
-          weight, ChunkedDistance(step.x, anchor.x), ChunkedDistance(step.y, anchor.y));
+          weight, ChunkedDistance(step.x, anchor.x), ScaledDualDistance(step.y, anchor.y));
       anchor = step;
       z_y = step.y;
       restart_gap = gap;
@@ -260,8 +271,7 @@ class EnergyPdhg {
             const double x =
                 count == 0
                     ? z_x
-                    : std::clamp(
-                          z_x - step_by_count_[count] / weight * ReducedCost(j, z_y), 0.0, 1.0);
+                    : std::clamp(z_x - primal_step_[j] / weight * ReducedCost(j, z_y), 0.0, 1.0);
             if (keep_step) step.x[j] = x;
             reflected[j] = static_cast<Stored>(2.0 * x - z_x);
           }
@@ -277,7 +287,8 @@ class EnergyPdhg {
               kx += EntryTimes(p_.row_entries[i],
                                static_cast<double>(reflected[EntryIndex(p_.row_entries[i])]));
             }
-            const double y = std::clamp(z_y[r] + weight * step_by_count_[last - first] * kx,
+            const double y = std::clamp(z_y[r] + weight * dual_step_by_count_[last - first] *
+                                                     static_cast<double>(p_.upper[r]) * kx,
                                         p_.Lower(r),
                                         static_cast<double>(p_.upper[r]));
             if (keep_step) step.y[r] = static_cast<Stored>(y);
@@ -286,6 +297,20 @@ class EnergyPdhg {
           }
         },
         kElementwiseChunk);
+  }
+
+  // The distance between two multiplier vectors in the scaled multipliers eta = y / w, where
+  // the steps are preconditioned; the primal weight balances it against the columns'.
+  double ScaledDualDistance(const std::vector<Stored>& a, const std::vector<Stored>& b) const {
+    return std::sqrt(SumChunks(a.size(), [&](std::size_t lo, std::size_t hi) {
+      double s = 0.0;
+      for (std::size_t i = lo; i < hi; ++i) {
+        if (p_.upper[i] <= 0.0f) continue;
+        const double d = (static_cast<double>(a[i]) - static_cast<double>(b[i])) / p_.upper[i];
+        s += d * d;
+      }
+      return s;
+    }));
   }
 
   // The Halpern weight lambda_k = (k + 1) / (k + 2).
@@ -353,8 +378,9 @@ class EnergyPdhg {
   const LabelingOptions& options_;
   const RunContext& ctx_;
   SaddleProblem p_;
-  // Primal and dual step of a column or row with that many entries (0: none).
-  std::vector<double> step_by_count_;
+  // A row's step with that many entries, before its weight (0: none); each column's step.
+  std::vector<double> dual_step_by_count_;
+  std::vector<double> primal_step_;
   double best_primal_ = 0.0;
   double best_dual_ = 0.0;
   std::vector<double> best_x_;

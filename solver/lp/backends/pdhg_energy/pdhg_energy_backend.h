@@ -9,7 +9,8 @@
 ///   w |sum nu x + k|       = max_{y in [-w, w]} y (sum nu x + k)
 /// so the relaxation is min_{x in [0,1]^n} max_{y in Y} u.x + y.(K x + b) with one multiplier per
 /// term and K of +-1 entries. Chambolle-Pock steps with the diagonal preconditioning of Pock &
-/// Chambolle (2011, alpha = 1: steps 1 / entries per column and per row) in reflected Halpern
+/// Chambolle (2011, alpha = 1) for the multipliers scaled to their boxes (y_r / w_r: a column's
+/// step is 1 / the sum of its terms' weights, a row's w_r / entries) in reflected Halpern
 /// iterations with restarts and a primal weight (Lu & Yang 2024; PDLP's restart rules). Both
 /// sets are boxes, so every step's point is feasible: the primal value is the energy of x, and
 /// every y proves the lower bound
