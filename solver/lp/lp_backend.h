@@ -88,11 +88,12 @@ struct LabelingOptions {
   /// 1 % above the full LP's with 36 % fewer full cells (docs/results.md, "Integral labelling").
   std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   /// "auto" uses the per-block solve above this many LP columns, when a partition of the cells
-  /// into more than one block is given; >= 0. 1,000,000: where the global pdhg stops finishing
-  /// in minutes (the 1.5M-column Andalusian LP did not converge in 26 min). Below it the global
-  /// LP is better and cheaper: on a 47.5k-column Andalusian crop blocks ended 1.2 % higher in
-  /// energy with 4x pdhg's CPU time (docs/design/lp_backend.md, "Per-block solve").
-  std::size_t auto_blocks_min_columns = 1000000;
+  /// into more than one block is given; >= 0. 20,000,000: since pdhg-energy's weighted steps
+  /// (session 14) the global solve is better and cheaper at every size measured, up to
+  /// city-1000's 7.0M columns (23 s to a 0.04 % gap, where the per-block solve took 221 s and
+  /// ended 1.1 % higher); above that the per-block solve keeps each solve's size bounded
+  /// (docs/design/lp_backend.md, "Per-block solve").
+  std::size_t auto_blocks_min_columns = 20000000;
   /// Cells per block at most in the partition `reconstruct` makes for "blocks" on a monolithic
   /// complex (k-d blocks of the cells' centroids, pipeline::CentroidBlocks; the block engine
   /// uses its own blocks); >= 1. The solver itself takes any partition it is given.
