@@ -49,17 +49,29 @@ double SumChunks(std::size_t n, const Fn& fn) {
   return sum;
 }
 
-/// Euclidean distance of two vectors of one length, summed over fixed chunks.
-template <typename T>
-inline double ChunkedDistance(const std::vector<T>& a, const std::vector<T>& b) {
+/// Euclidean distance of a / scale and b / scale (two vectors of one length, scale(i) the
+/// divisor of element i; elements whose scale is not positive are left out), summed over fixed
+/// chunks.
+template <typename T, typename Scale>
+inline double ChunkedDistance(const std::vector<T>& a,
+                              const std::vector<T>& b,
+                              const Scale& scale) {
   return std::sqrt(SumChunks(a.size(), [&](std::size_t lo, std::size_t hi) {
     double s = 0.0;
     for (std::size_t i = lo; i < hi; ++i) {
-      const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+      const double divisor = scale(i);
+      if (!(divisor > 0.0)) continue;
+      const double d = (static_cast<double>(a[i]) - static_cast<double>(b[i])) / divisor;
       s += d * d;
     }
     return s;
   }));
+}
+
+/// Euclidean distance of two vectors of one length, summed over fixed chunks.
+template <typename T>
+inline double ChunkedDistance(const std::vector<T>& a, const std::vector<T>& b) {
+  return ChunkedDistance(a, b, [](std::size_t) { return 1.0; });
 }
 
 }  // namespace linesurf::solver

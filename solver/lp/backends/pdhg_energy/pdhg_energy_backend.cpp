@@ -222,9 +222,13 @@ class EnergyPdhg {
       const bool restart = ShouldRestart(gap, restart_gap, previous_gap, since_restart, it);
       previous_gap = gap;
       if (!restart) continue;
-      // Restart the Halpern sequence at the step's point, with a rebalanced primal weight.
-      weight = SmoothedPrimalWeight(
-          weight, ChunkedDistance(step.x, anchor.x), ScaledDualDistance(step.y, anchor.y));
+      // Restart the Halpern sequence at the step's point, with a rebalanced primal weight: the
+      // multipliers' distance is taken in eta = y / w, where the steps are preconditioned.
+      weight = SmoothedPrimalWeight(weight,
+                                    ChunkedDistance(step.x, anchor.x),
+                                    ChunkedDistance(step.y, anchor.y, [this](std::size_t r) {
+                                      return static_cast<double>(p_.upper[r]);
+                                    }));
       anchor = step;
       z_y = step.y;
       restart_gap = gap;
@@ -297,20 +301,6 @@ class EnergyPdhg {
           }
         },
         kElementwiseChunk);
-  }
-
-  // The distance between two multiplier vectors in the scaled multipliers eta = y / w, where
-  // the steps are preconditioned; the primal weight balances it against the columns'.
-  double ScaledDualDistance(const std::vector<Stored>& a, const std::vector<Stored>& b) const {
-    return std::sqrt(SumChunks(a.size(), [&](std::size_t lo, std::size_t hi) {
-      double s = 0.0;
-      for (std::size_t i = lo; i < hi; ++i) {
-        if (p_.upper[i] <= 0.0f) continue;
-        const double d = (static_cast<double>(a[i]) - static_cast<double>(b[i])) / p_.upper[i];
-        s += d * d;
-      }
-      return s;
-    }));
   }
 
   // The Halpern weight lambda_k = (k + 1) / (k + 2).
