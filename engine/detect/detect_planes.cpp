@@ -156,6 +156,9 @@ struct CandidateResult {
   std::uint32_t support = 0;
   double score = 0.0;
   std::int64_t failed_draws = 0;
+  /// Failed draws of lines farther than 2 eps apart: no pair on one plane fails so, so they
+  /// count as trials of the adaptive stop (R-RANSAC's pre-test); the other failures do not.
+  std::int64_t apart_draws = 0;
   Plane3 plane;
 };
 
@@ -334,8 +337,9 @@ class Detector {
 
   /// The plane through a and b (containing both directions, halfway between the two infinite
   /// lines), if the pair is valid: not near-parallel, lines within 2 eps, and b not on a plane
-  /// of a (never re-propose a plane already extracted).
-  std::optional<Plane3> PlaneFromPair(SegmentId a, SegmentId b) const {
+  /// of a (never re-propose a plane already extracted). `apart` is set when the only reason to
+  /// reject the pair is that the lines pass farther than 2 eps apart.
+  std::optional<Plane3> PlaneFromPair(SegmentId a, SegmentId b, bool* apart = nullptr) const {
     if (a == b) return std::nullopt;
     const PlaneMembership& ma = memberships_[a.index()];
     const PlaneMembership& mb = memberships_[b.index()];
@@ -351,12 +355,18 @@ class Detector {
     const Vec3& mid_a = midpoint_[a.index()];
     const Vec3& mid_b = midpoint_[b.index()];
     const double gap = cross.dot(mid_a - mid_b);
-    if (gap * gap > kCheapRejectGrow * 4.0 * epsilon_ * epsilon_ * sin2) return std::nullopt;
+    if (gap * gap > kCheapRejectGrow * 4.0 * epsilon_ * epsilon_ * sin2) {
+      if (apart != nullptr && sin2 >= sin_pair_ * sin_pair_) *apart = true;
+      return std::nullopt;
+    }
     const double sin = std::sqrt(sin2);
     if (sin < sin_pair_) return std::nullopt;
     Plane3 plane;
     plane.normal = cross / sin;
-    if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * epsilon_) return std::nullopt;
+    if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * epsilon_) {
+      if (apart != nullptr) *apart = true;
+      return std::nullopt;
+    }
     plane.point = 0.5 * (mid_a + mid_b);
     return plane;
   }
@@ -384,9 +394,11 @@ class Detector {
       } else {
         b = pool[rng.Below(pool.size())];
       }
-      const std::optional<Plane3> plane = PlaneFromPair(a, b);
+      bool apart = false;
+      const std::optional<Plane3> plane = PlaneFromPair(a, b, &apart);
       if (!plane) {
         ++result.failed_draws;
+        result.apart_draws += apart ? 1 : 0;
         continue;
       }
       result.valid = true;
@@ -398,10 +410,14 @@ class Detector {
   }
 
   /// Evaluates candidates [0, count) with `make(k)` in parallel and folds them, in k order, into
-  /// `best` (score, then smallest k).
+  /// `best` (score, then smallest k). Returns the batch's trials: valid candidates and apart
+  /// draws.
   template <typename Make>
-  void EvaluateBatch(std::int64_t first, std::int64_t count, Make&& make,
-                     std::optional<CandidateResult>& best, PlaneDetectionStats& stats) const {
+  std::int64_t EvaluateBatch(std::int64_t first,
+                             std::int64_t count,
+                             Make&& make,
+                             std::optional<CandidateResult>& best,
+                             PlaneDetectionStats& stats) const {
     std::vector<CandidateResult> results(static_cast<std::size_t>(count));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, results.size(), kCandidateGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
@@ -409,12 +425,16 @@ class Detector {
                           results[i] = make(first + static_cast<std::int64_t>(i));
                         }
                       });
+    std::int64_t trials = 0;
     for (const CandidateResult& r : results) {
       stats.failed_draws += r.failed_draws;
+      trials += r.apart_draws;
       if (!r.valid) continue;
+      ++trials;
       ++stats.candidates_evaluated;
       if (!best || r.score > best->score) best = r;
     }
+    return trials;
   }
 
   std::optional<CandidateResult> SearchPlane(const std::vector<SegmentId>& pool,
@@ -449,15 +469,19 @@ class Detector {
     const double window = 2.0 * options_.near_window;
     std::int64_t done = 0;
     const std::int64_t failed_before = stats.failed_draws;
+    std::int64_t trials = 0;
     while (done < options_.iterations) {
       const std::int64_t count = std::min(kBatchSize, options_.iterations - done);
-      EvaluateBatch(
-          done, count, [&](std::int64_t k) { return RandomCandidate(pool, plane_index, k); }, best,
+      trials += EvaluateBatch(
+          done,
+          count,
+          [&](std::int64_t k) { return RandomCandidate(pool, plane_index, k); },
+          best,
           stats);
       done += count;
       if (stats.failed_draws - failed_before >= options_.max_failed_draws) break;
       if (best && done >= options_.min_iterations) {
-        // Probability that one candidate hits the best plane: the first segment on it, then the
+        // Probability that one draw hits the best plane: the first segment on it, then the
         // second on it too (near draw: the plane fills the window up to its support).
         const double s = best->support;
         const double p_first = std::min(1.0, s / n);
@@ -466,7 +490,7 @@ class Detector {
         const double w = p_first * p_second;
         if (w >= 1.0) break;
         const double needed = log_miss / std::log1p(-w);
-        if (static_cast<double>(done) >= needed) break;
+        if (static_cast<double>(trials) >= needed) break;
       }
       ctx_.ThrowIfCancelled(kDetectPlanesStage);
     }

@@ -48,7 +48,8 @@ struct PlaneDetectionOptions {
   /// Candidates always evaluated per plane before the adaptive stop may end the search (>= 1).
   std::int64_t min_iterations = 512;
   /// Adaptive stop: end the search for a plane once the probability of having missed a plane
-  /// better than the current best is below 1 - confidence ((0, 1); 0.999).
+  /// better than the current best is below 1 - confidence ((0, 1); 0.999). Its trials are the
+  /// valid candidates and the draws of lines more than 2 eps apart (docs/plane_detection.md).
   double confidence = 0.999;
   /// Maximum number of planes N_max (>= 1; paper: 160).
   std::int32_t max_planes = 160;

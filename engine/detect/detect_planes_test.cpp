@@ -16,6 +16,15 @@
 namespace linesurf {
 namespace {
 
+// A point drawn uniformly in the ball of radius 2 about the origin.
+Vec3 InBall(Rng& rng) {
+  Vec3 x;
+  do {
+    x = Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), rng.Uniform(-2, 2));
+  } while (x.norm() > 2.0);
+  return x;
+}
+
 // The 12 edges of the cube [-1, 1]^3 (side 2), with optional endpoint noise and outliers in a
 // ball of radius 2, and one viewpoint per edge outside the cube. (Hand-made: the acceptance tests
 // on synthetic scenes use linesurf_synth.)
@@ -42,14 +51,7 @@ Scene NoisyCube(double noise, int outliers, std::uint64_t seed) {
     }
   }
   for (int i = 0; i < outliers; ++i) {
-    auto in_ball = [&] {
-      Vec3 x;
-      do {
-        x = Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), rng.Uniform(-2, 2));
-      } while (x.norm() > 2.0);
-      return x;
-    };
-    scene.segments.push_back({in_ball(), in_ball()});
+    scene.segments.push_back({InBall(rng), InBall(rng)});
     scene.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(0u)});
   }
   return scene;
@@ -122,6 +124,34 @@ TEST(DetectPlanes, CleanCubeAlsoWithRandomSampling) {
   const PlaneDetectionResult r = Detect(NoisyCube(0.0, 0, 1), o);
   EXPECT_EQ(r.planes.size(), 6u);
   EXPECT_EQ(FacesFound(r), 6);
+}
+
+// 40 lines on the plane z = 0 among 2,000 outlier segments in the ball of radius 2: most pair
+// draws meet lines that pass far apart. Such a draw is a trial of the adaptive stop (it could
+// have hit the plane), so one batch of candidates is enough at this confidence; counting only
+// valid candidates took 2,290 of them.
+TEST(DetectPlanes, AdaptiveStopCountsPairsOfLinesTooFarApartAsTrials) {
+  Scene scene;
+  Rng rng(7);
+  scene.viewpoints.push_back(Vec3(0.0, 0.0, 5.0));
+  for (int i = 0; i < 2040; ++i) {
+    if (i < 40) {
+      scene.segments.push_back({Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), 0.0),
+                                Vec3(rng.Uniform(-2, 2), rng.Uniform(-2, 2), 0.0)});
+    } else {
+      scene.segments.push_back({InBall(rng), InBall(rng)});
+    }
+    scene.observations.AddRow(std::array<ViewpointId, 1>{ViewpointId(0u)});
+  }
+  PlaneDetectionOptions o;
+  o.epsilon = 0.03;
+  o.min_iterations = 1;
+  o.max_planes = 1;  // one search
+  const PlaneDetectionResult r = Detect(scene, o);
+  ASSERT_EQ(r.planes.size(), 1u);
+  EXPECT_GE(r.support[PlaneId(0u)].inliers.size(), 36u);
+  EXPECT_NEAR(std::abs(r.planes[PlaneId(0u)].normal.z()), 1.0, 1e-3);
+  EXPECT_LE(r.stats.candidates_evaluated, 2 * 128);
 }
 
 TEST(DetectPlanes, SingleSupportAblationFindsFewerCubeFaces) {
