@@ -141,7 +141,7 @@ SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& op
   for (std::size_t v = 0; v < scene.viewpoints.size(); ++v) {
     if (observing[v] == 0) continue;
     const Vec3& o = scene.viewpoints[ViewpointId(v)];
-    bool enclosed = true;
+    int open = 0;
     for (const Vec3& d : dirs) {
       bool hit = false;
       for (std::size_t p = 0; p < outlines.size() && !hit; ++p) {
@@ -152,12 +152,9 @@ SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& op
         const double t = -outline.plane.SignedDistance(o) / nd;
         hit = t > 0.0 && outline.Surrounds(outline.Project(o + t * d), in_plane);
       }
-      if (!hit) {
-        enclosed = false;
-        break;
-      }
+      if (!hit && ++open > options.open_rays) break;
     }
-    decision.enclosed_viewpoints += enclosed ? 1 : 0;
+    decision.enclosed_viewpoints += open <= options.open_rays ? 1 : 0;
   }
   decision.interior = 2 * decision.enclosed_viewpoints > decision.observing_viewpoints;
   const double share = decision.observing_viewpoints == 0
@@ -168,7 +165,8 @@ SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& op
       decision.observing_viewpoints > 0 && share >= options.weak_low && share <= options.weak_high;
   std::ostringstream os;
   os << "auto: " << decision.enclosed_viewpoints << " of " << decision.observing_viewpoints
-     << " viewpoints enclosed by planes -> " << (decision.interior ? "interior" : "exterior");
+     << " viewpoints enclosed by planes (at most " << options.open_rays << " of 14 rays open) -> "
+     << (decision.interior ? "interior" : "exterior");
   decision.reason = os.str();
   return decision;
 }

@@ -77,6 +77,35 @@ TEST(DecideSceneMode, ViewpointsInsideABoxAreEnclosed) {
   EXPECT_FALSE(d.weak);
 }
 
+// The wall x = 6 lost the vertical edge at y = 5 to its other plane only (as detection gives a
+// crease segment to a spurious plane): from inside, the ray along +x meets the wall at a point
+// that no inlier closes toward +y. One open ray of 14 leaves the viewpoint enclosed; with no
+// open ray allowed (the rule before session 15) the room looked like an exterior.
+TEST(DecideSceneMode, ARayOrTwoOpenThroughAWallMissingAnEdgeStillEncloses) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
+  Scene scene = boxes.Seen({Vec3(3, 2.5, 1.5), Vec3(2, 2, 1.6), Vec3(4, 3, 1.2)});
+  std::size_t dropped = 0;
+  for (std::size_t s = 0; s < scene.NumSegments(); ++s) {
+    const Segment3& seg = scene.segments[SegmentId(s)];
+    if (seg.p1.x() != 6.0 || seg.p1.y() != 5.0 || seg.p2.x() != 6.0 || seg.p2.y() != 5.0) continue;
+    PlaneMembership only_y;
+    for (std::uint8_t k = 0; k < scene.memberships[SegmentId(s)].count; ++k) {
+      const PlaneId p = scene.memberships[SegmentId(s)].planes[k];
+      if (scene.planes[p].normal.y() == 1.0) only_y.Add(p);
+    }
+    scene.memberships[SegmentId(s)] = only_y;
+    ++dropped;
+  }
+  ASSERT_EQ(dropped, 1u);
+  const SceneModeDecision d = DecideSceneMode(scene);
+  EXPECT_EQ(d.enclosed_viewpoints, 3u);
+  EXPECT_TRUE(d.interior);
+  SceneModeOptions no_open_ray;
+  no_open_ray.open_rays = 0;
+  EXPECT_EQ(DecideSceneMode(scene, no_open_ray).enclosed_viewpoints, 0u);
+}
+
 TEST(DecideSceneMode, ViewpointsAroundABoxAreNot) {
   BoxEdgesScene boxes;
   boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
