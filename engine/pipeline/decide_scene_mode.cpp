@@ -1,6 +1,10 @@
 #include "engine/pipeline/decide_scene_mode.h"
 
+#include "engine/core/box_bvh.h"
+#include "engine/core/parallel.h"
+
 #include <Eigen/Geometry>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -18,6 +22,9 @@ constexpr double kMinRayPlaneCosine = 1e-6;
 constexpr std::size_t kInPlaneDirections = 8;
 /// An in-plane direction and an inlier closer to parallel than this sine do not cross.
 constexpr double kParallelSine = 1e-12;
+/// Growth of a plane's hit box, relative to its coordinates: far above the rounding of a hit
+/// point, so the box never drops a hit that the exact test would accept.
+constexpr double kHitBoxMargin = 1e-7;
 
 using Vec2 = Eigen::Vector2d;
 
@@ -75,6 +82,20 @@ struct PlaneOutline {
     min = min.cwiseMin(from.back()).cwiseMin(to.back());
     max = max.cwiseMax(from.back()).cwiseMax(to.back());
   }
+  /// A box that holds every point of the plane that Surrounds may accept (the corners of the
+  /// in-plane box, lifted), grown for rounding; empty without inliers.
+  [[nodiscard]] Box3 HitBox() const {
+    Box3 box;
+    if (from.empty()) return box;
+    for (const double x : {min.x(), max.x()}) {
+      for (const double y : {min.y(), max.y()}) box.Extend(plane.point + x * u + y * w);
+    }
+    const double scale =
+        box.min.cwiseAbs().cwiseMax(box.max.cwiseAbs()).maxCoeff() + box.Extent().maxCoeff();
+    box.min.array() -= kHitBoxMargin * scale;
+    box.max.array() += kHitBoxMargin * scale;
+    return box;
+  }
   /// `h` lies on an inlier, or each in-plane direction from `h` crosses some inlier.
   [[nodiscard]] bool Surrounds(const Vec2& h,
                                const std::array<Vec2, kInPlaneDirections>& dirs) const {
@@ -124,38 +145,64 @@ std::vector<PlaneOutline> Outlines(const Scene& scene, double gap_bridge) {
   return outlines;
 }
 
+/// The observing viewpoints (ascending), or `max_viewpoints` of them evenly spaced in that order
+/// when there are more; `observing` is set to how many observe.
+std::vector<std::size_t> ExaminedViewpoints(const Scene& scene,
+                                            std::size_t max_viewpoints,
+                                            std::size_t& observing) {
+  std::vector<std::uint8_t> observes(scene.viewpoints.size(), 0);
+  for (const ViewpointId v : scene.observations.items()) observes[v.index()] = 1;
+  std::vector<std::size_t> all;
+  for (std::size_t v = 0; v < observes.size(); ++v) {
+    if (observes[v] != 0) all.push_back(v);
+  }
+  observing = all.size();
+  const std::size_t n = std::max<std::size_t>(max_viewpoints, 1);
+  if (all.size() <= n) return all;
+  std::vector<std::size_t> sample(n);
+  for (std::size_t i = 0; i < n; ++i) sample[i] = all[i * all.size() / n];
+  return sample;
+}
+
 }  // namespace
 
-SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& options) {
+SceneModeDecision DecideSceneMode(const Scene& scene,
+                                  const SceneModeOptions& options,
+                                  const RunContext& ctx) {
   SceneModeDecision decision;
-  std::vector<std::uint8_t> observing(scene.viewpoints.size(), 0);
-  for (const ViewpointId v : scene.observations.items()) observing[v.index()] = 1;
-  for (const std::uint8_t o : observing) decision.observing_viewpoints += o;
+  const std::vector<std::size_t> examined =
+      ExaminedViewpoints(scene, options.max_viewpoints, decision.sampled_from);
+  decision.observing_viewpoints = examined.size();
   if (scene.planes.empty() || !scene.HasMemberships() || scene.NumSegments() == 0) {
     decision.reason = "auto: no planes -> exterior";
     return decision;
   }
   const std::vector<PlaneOutline> outlines = Outlines(scene, options.gap_bridge);
+  std::vector<Box3> boxes;
+  boxes.reserve(outlines.size());
+  for (const PlaneOutline& outline : outlines) boxes.push_back(outline.HitBox());
+  const BoxBvh bvh(boxes);
   const std::array<Vec3, 14> dirs = RayDirections();
   const std::array<Vec2, kInPlaneDirections> in_plane = InPlaneDirections();
-  for (std::size_t v = 0; v < scene.viewpoints.size(); ++v) {
-    if (observing[v] == 0) continue;
-    const Vec3& o = scene.viewpoints[ViewpointId(v)];
-    int open = 0;
-    for (const Vec3& d : dirs) {
-      bool hit = false;
-      for (std::size_t p = 0; p < outlines.size() && !hit; ++p) {
-        const PlaneOutline& outline = outlines[p];
-        if (outline.from.empty()) continue;
-        const double nd = outline.plane.normal.dot(d);
-        if (std::abs(nd) < kMinRayPlaneCosine) continue;
-        const double t = -outline.plane.SignedDistance(o) / nd;
-        hit = t > 0.0 && outline.Surrounds(outline.Project(o + t * d), in_plane);
+  std::vector<std::uint8_t> enclosed(examined.size(), 0);
+  RunInArena(ctx, [&] {
+    tbb::parallel_for(std::size_t{0}, examined.size(), [&](std::size_t i) {
+      const Vec3& o = scene.viewpoints[ViewpointId(examined[i])];
+      int open = 0;
+      for (const Vec3& d : dirs) {
+        const bool hit = bvh.AnyAlongRay(o, d, [&](std::uint32_t p) {
+          const PlaneOutline& outline = outlines[p];
+          const double nd = outline.plane.normal.dot(d);
+          if (std::abs(nd) < kMinRayPlaneCosine) return false;
+          const double t = -outline.plane.SignedDistance(o) / nd;
+          return t > 0.0 && outline.Surrounds(outline.Project(o + t * d), in_plane);
+        });
+        if (!hit && ++open > options.open_rays) break;
       }
-      if (!hit && ++open > options.open_rays) break;
-    }
-    decision.enclosed_viewpoints += open <= options.open_rays ? 1 : 0;
-  }
+      enclosed[i] = open <= options.open_rays ? 1 : 0;
+    });
+  });
+  for (const std::uint8_t e : enclosed) decision.enclosed_viewpoints += e;
   decision.interior = 2 * decision.enclosed_viewpoints > decision.observing_viewpoints;
   const double share = decision.observing_viewpoints == 0
                            ? 0.0
@@ -164,8 +211,11 @@ SceneModeDecision DecideSceneMode(const Scene& scene, const SceneModeOptions& op
   decision.weak =
       decision.observing_viewpoints > 0 && share >= options.weak_low && share <= options.weak_high;
   std::ostringstream os;
-  os << "auto: " << decision.enclosed_viewpoints << " of " << decision.observing_viewpoints
-     << " viewpoints enclosed by planes (at most " << options.open_rays << " of 14 rays open) -> "
+  os << "auto: " << decision.enclosed_viewpoints << " of " << decision.observing_viewpoints;
+  if (decision.sampled_from > decision.observing_viewpoints) {
+    os << " (an even sample of " << decision.sampled_from << ")";
+  }
+  os << " viewpoints enclosed by planes (at most " << options.open_rays << " of 14 rays open) -> "
      << (decision.interior ? "interior" : "exterior");
   decision.reason = os.str();
   return decision;

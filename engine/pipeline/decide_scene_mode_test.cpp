@@ -106,6 +106,27 @@ TEST(DecideSceneMode, ARayOrTwoOpenThroughAWallMissingAnEdgeStillEncloses) {
   EXPECT_EQ(DecideSceneMode(scene, no_open_ray).enclosed_viewpoints, 0u);
 }
 
+// Past max_viewpoints the decision examines an even sample: here every other viewpoint (the even
+// indices, of which one in two stands outside the box).
+TEST(DecideSceneMode, ManyViewpointsAreDecidedOnAnEvenSample) {
+  BoxEdgesScene boxes;
+  boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
+  std::vector<Vec3> viewpoints;
+  for (int i = 0; i < 300; ++i) {
+    viewpoints.push_back(i % 4 == 2 ? Vec3(-10, 2, 1.6) : Vec3(1 + 0.01 * i, 2.5, 1.5));
+  }
+  SceneModeOptions half;
+  half.max_viewpoints = 150;
+  const SceneModeDecision d = DecideSceneMode(boxes.Seen(viewpoints), half);
+  EXPECT_EQ(d.observing_viewpoints, 150u);
+  EXPECT_EQ(d.sampled_from, 300u);
+  EXPECT_EQ(d.enclosed_viewpoints, 75u);
+  EXPECT_NE(d.reason.find("an even sample of 300"), std::string::npos) << d.reason;
+  const SceneModeDecision all = DecideSceneMode(boxes.Seen(viewpoints));
+  EXPECT_EQ(all.observing_viewpoints, 300u);
+  EXPECT_EQ(all.enclosed_viewpoints, 225u);
+}
+
 TEST(DecideSceneMode, ViewpointsAroundABoxAreNot) {
   BoxEdgesScene boxes;
   boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));

@@ -191,7 +191,9 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     timer.Stop();
 
     // Decided in every mode: a given mode that contradicts the evidence is warned about.
-    facts.decision = DecideSceneMode(scene);
+    timer.Start("scene_mode");
+    facts.decision = DecideSceneMode(scene, {}, stage_ctx);
+    timer.Stop();
     facts.auto_mode = options.scene_mode == SceneMode::kAuto;
     facts.interior =
         facts.auto_mode ? facts.decision.interior : options.scene_mode == SceneMode::kInterior;

@@ -1,0 +1,88 @@
+#include "engine/core/box_bvh.h"
+
+#include "engine/core/rng.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <vector>
+
+namespace linesurf {
+namespace {
+
+std::set<std::uint32_t> AllAlong(const BoxBvh& bvh, const Vec3& o, const Vec3& d) {
+  std::set<std::uint32_t> met;
+  bvh.AnyAlongRay(o, d, [&](std::uint32_t i) {
+    EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
+    return false;
+  });
+  return met;
+}
+
+TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
+  Rng rng(3);
+  std::vector<Box3> boxes;
+  for (int i = 0; i < 500; ++i) {
+    Box3 b;
+    const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
+    b.Extend(c);
+    // Some flat boxes (a plane's outline), some empty ones.
+    b.Extend(c + Vec3(rng.Uniform(0, 3), i % 3 == 0 ? 0.0 : rng.Uniform(0, 3), rng.Uniform(0, 3)));
+    boxes.push_back(i % 50 == 7 ? Box3{} : b);
+  }
+  const BoxBvh bvh(boxes);
+  // The 6 axis directions (zero components) and random ones.
+  std::vector<Vec3> dirs = {
+      Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY(), Vec3::UnitZ(), -Vec3::UnitZ()};
+  for (int i = 0; i < 50; ++i) {
+    dirs.push_back(Vec3(rng.Normal(), rng.Normal(), rng.Normal()).normalized());
+  }
+  std::size_t total = 0;
+  for (int r = 0; r < 40; ++r) {
+    const Vec3 o(rng.Uniform(-12, 12), rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+    for (const Vec3& d : dirs) {
+      std::set<std::uint32_t> expected;
+      for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+        if (!boxes[i].IsEmpty() && BoxBvh::RayMeetsBox(o, d, boxes[i])) expected.insert(i);
+      }
+      EXPECT_EQ(AllAlong(bvh, o, d), expected);
+      total += expected.size();
+    }
+  }
+  EXPECT_GT(total, 1000u);  // the rays do meet boxes
+}
+
+TEST(BoxBvh, RayMeetsBoxOnlyAheadAndOnItsBoundary) {
+  Box3 b;
+  b.Extend(Vec3(1, 0, 0));
+  b.Extend(Vec3(2, 1, 1));
+  EXPECT_TRUE(BoxBvh::RayMeetsBox(Vec3(0, 0.5, 0.5), Vec3::UnitX(), b));
+  EXPECT_FALSE(BoxBvh::RayMeetsBox(Vec3(0, 0.5, 0.5), -Vec3::UnitX(), b));  // behind
+  EXPECT_TRUE(BoxBvh::RayMeetsBox(Vec3(0, 1, 1), Vec3::UnitX(), b));        // along an edge
+  EXPECT_FALSE(BoxBvh::RayMeetsBox(Vec3(0, 1.5, 0.5), Vec3::UnitX(), b));
+  EXPECT_TRUE(BoxBvh::RayMeetsBox(Vec3(1.5, 0.5, 0.5), Vec3::UnitY(), b));  // from inside
+}
+
+TEST(BoxBvh, AnyAlongRayStopsAtTheFirstAcceptedBox) {
+  std::vector<Box3> boxes(10);
+  for (int i = 0; i < 10; ++i) {
+    boxes[i].Extend(Vec3(i, 0, 0));
+    boxes[i].Extend(Vec3(i + 0.5, 1, 1));
+  }
+  const BoxBvh bvh(boxes);
+  int calls = 0;
+  EXPECT_TRUE(bvh.AnyAlongRay(Vec3(-1, 0.5, 0.5), Vec3::UnitX(), [&](std::uint32_t) {
+    ++calls;
+    return true;
+  }));
+  EXPECT_EQ(calls, 1);
+  EXPECT_FALSE(
+      bvh.AnyAlongRay(Vec3(-1, 5, 0.5), Vec3::UnitX(), [](std::uint32_t) { return true; }));
+  EXPECT_FALSE(
+      BoxBvh(std::vector<Box3>{}).AnyAlongRay(Vec3::Zero(), Vec3::UnitX(), [](std::uint32_t) {
+        return true;
+      }));
+}
+
+}  // namespace
+}  // namespace linesurf
