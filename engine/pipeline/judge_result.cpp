@@ -23,6 +23,18 @@ double Share(std::size_t part, std::size_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
 
+/// "E of N observing viewpoints", or "E of N viewpoints (an even sample of M observing)".
+std::string EnclosedCount(const SceneModeDecision& d) {
+  std::ostringstream os;
+  os << d.enclosed_viewpoints << " of " << d.observing_viewpoints;
+  if (d.sampled_from > d.observing_viewpoints) {
+    os << " viewpoints (an even sample of " << d.sampled_from << " observing)";
+  } else {
+    os << " observing viewpoints";
+  }
+  return os.str();
+}
+
 void WarnSceneMode(const ResultFacts& f,
                    const SceneModeOptions& mode_options,
                    std::vector<std::string>& warnings) {
@@ -32,17 +44,14 @@ void WarnSceneMode(const ResultFacts& f,
   std::ostringstream os;
   if (f.auto_mode && d.weak) {
     os << "scene mode auto chose " << ModeName(f.interior)
-       << " on weak evidence: " << d.enclosed_viewpoints << " of " << d.observing_viewpoints
-       << " observing viewpoints are enclosed by planes; choose the scene mode (exterior or "
-          "interior) explicitly";
+       << " on weak evidence: " << EnclosedCount(d)
+       << " are enclosed by planes; choose the scene mode (exterior or interior) explicitly";
   } else if (!f.auto_mode && f.interior && share < mode_options.weak_low) {
-    os << "scene mode interior was requested, but only " << d.enclosed_viewpoints << " of "
-       << d.observing_viewpoints
-       << " observing viewpoints are enclosed by planes (the scene looks like an exterior)";
+    os << "scene mode interior was requested, but only " << EnclosedCount(d)
+       << " are enclosed by planes (the scene looks like an exterior)";
   } else if (!f.auto_mode && !f.interior && share > mode_options.weak_high) {
-    os << "scene mode exterior was requested, but " << d.enclosed_viewpoints << " of "
-       << d.observing_viewpoints
-       << " observing viewpoints are enclosed by planes (the scene looks like an interior)";
+    os << "scene mode exterior was requested, but " << EnclosedCount(d)
+       << " are enclosed by planes (the scene looks like an interior)";
   }
   if (!os.str().empty()) warnings.push_back(os.str());
 }

@@ -118,6 +118,19 @@ TEST(JudgeResult, GivenModeAgainstTheEvidenceIsWarned) {
   const ResultJudgement j = JudgeResult(f);
   ASSERT_EQ(j.warnings.size(), 1u);
   EXPECT_TRUE(Mentions(j.warnings[0], "looks like an interior")) << j.warnings[0];
+  EXPECT_TRUE(Mentions(j.warnings[0], "28 of 28 observing viewpoints")) << j.warnings[0];
+}
+
+TEST(JudgeResult, ASampledDecisionSaysSoInItsWarning) {
+  ResultFacts f = GoodExterior();
+  f.decision.observing_viewpoints = 1000;
+  f.decision.sampled_from = 6402;
+  f.decision.enclosed_viewpoints = 500;
+  f.decision.weak = true;
+  const ResultJudgement j = JudgeResult(f);
+  ASSERT_FALSE(j.warnings.empty());
+  EXPECT_TRUE(Mentions(j.warnings[0], "500 of 1000 viewpoints (an even sample of 6402 observing)"))
+      << j.warnings[0];
 }
 
 }  // namespace
