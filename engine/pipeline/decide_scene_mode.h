@@ -8,9 +8,9 @@
 /// plane's inlier segments surround: in the plane, each of 8 directions from that point crosses an
 /// inlier (inliers lengthened by `gap_bridge` of their length at each end, which bridges the gaps
 /// between the pieces of one cut line). The scene is interior when more than half of the
-/// observing viewpoints are enclosed. A room has walls, floor and ceiling all around its
-/// cameras; a house seen from a ring of cameras, or a street seen from street level, leaves
-/// open directions (away from the house, or the sky).
+/// observing viewpoints examined (all, or an even sample of max_viewpoints) are enclosed. A room
+/// has walls, floor and ceiling all around its cameras; a house seen from a ring of cameras, or a
+/// street seen from street level, leaves open directions (away from the house, or the sky).
 ///
 /// Why surround and not the inliers' bounding box: a plane whose inliers are spread over a
 /// whole city (the floor bands of every building at one height) has a bounding box that covers
@@ -55,7 +55,8 @@ struct SceneModeDecision {
   std::size_t observing_viewpoints = 0;
   /// How many viewpoints observe a segment (observing_viewpoints when there was no sample).
   std::size_t sampled_from = 0;
-  /// One sentence, e.g. "auto: 12 of 12 viewpoints enclosed by planes -> interior".
+  /// One sentence, e.g. "auto: 12 of 12 viewpoints enclosed by planes (at most 3 of 14 rays
+  /// open) -> interior".
   std::string reason;
 };
 
