@@ -46,7 +46,7 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(
         const partition::BlockSizeChoice choice =
             ValueOrThrow(partition::ChooseBlockSize(segments, box, *auto_blocks));
         // One block is the whole scene: keep the monolithic detection (its exact result).
-        if (choice.halvings > 0) options.block_size = choice.block_size;
+        if (!choice.whole_scene) options.block_size = choice.block_size;
       }
     }
     out.detection_block_size = options.block_size;

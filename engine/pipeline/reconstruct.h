@@ -76,9 +76,11 @@ struct ReconstructOptions {
   /// Blocks engine, planes.block_size 0: the detection cube side, by segments alone (the whole
   /// scene when it fits one block). 4,000 segments keep a block's planes under max_planes'
   /// default of 160 on the synthetic cities (about 8 planes per 270 segments).
-  partition::BlockSizeRule detection_blocks = {.target_segments_per_block = 4000.0,
-                                               .target_planes_per_block = 1e9,
-                                               .min_block_lengths = 8.0};
+  partition::BlockSizeRule detection_blocks = {
+      .ladder = partition::BlockSizeLadder::kHalvingsOfTheExtent,
+      .target_segments_per_block = 4000.0,
+      .target_planes_per_block = 1e9,
+      .min_block_lengths = 8.0};
   SceneMode scene_mode = SceneMode::kAuto;
   /// The box is the bounding box of the segments and viewpoints grown on each side by this
   /// fraction of its extent along that axis (at least this fraction of its diagonal). Range

@@ -52,6 +52,64 @@ BlockGrid Grid(const Box3& box, double size) {
   return std::move(g).value();
 }
 
+/// What both ladders measure against.
+struct RuleInput {
+  std::span<const Segment3> segments;
+  std::span<const PlaneMembership> memberships;
+  const Box3& box;
+  const BlockSizeRule& rule;
+  double longest = 0.0;  ///< the longest extent of the box
+  double floor = 0.0;    ///< rule.min_block_lengths median segment lengths
+};
+
+/// The rule's means at block size `size`.
+BlockSizeChoice Measure(const RuleInput& in, double size) {
+  BlockSizeChoice choice;
+  choice.block_size = size;
+  const auto [occupied, block_planes] = Occupancy(in.segments, in.memberships, Grid(in.box, size));
+  choice.occupied_blocks = occupied;
+  choice.mean_segments_per_block =
+      static_cast<double>(in.segments.size()) / static_cast<double>(occupied);
+  choice.mean_planes_per_block = static_cast<double>(block_planes) / static_cast<double>(occupied);
+  return choice;
+}
+
+bool MeetsTargets(const BlockSizeChoice& choice, const BlockSizeRule& rule) {
+  return choice.mean_segments_per_block <= rule.target_segments_per_block &&
+         choice.mean_planes_per_block <= rule.target_planes_per_block;
+}
+
+BlockSizeChoice HalveTheExtent(const RuleInput& in) {
+  BlockSizeChoice choice = Measure(in, in.longest);
+  while (!MeetsTargets(choice, in.rule) && choice.steps < kMaxHalvings) {
+    const double size = std::ldexp(in.longest, -(choice.steps + 1));
+    if (size < in.floor) {
+      choice.limited_by_length = true;
+      break;
+    }
+    const int steps = choice.steps + 1;
+    choice = Measure(in, size);
+    choice.steps = steps;
+  }
+  return choice;
+}
+
+BlockSizeChoice ClimbFromTheFloor(const RuleInput& in) {
+  BlockSizeChoice choice = Measure(in, std::min(in.floor, in.longest));
+  if (!MeetsTargets(choice, in.rule) || in.floor >= in.longest) {
+    choice.limited_by_length = !MeetsTargets(choice, in.rule);
+    return choice;
+  }
+  for (int steps = 1;; ++steps) {
+    const double size = std::min(in.floor * std::exp2(0.25 * steps), in.longest);
+    BlockSizeChoice next = Measure(in, size);
+    if (!MeetsTargets(next, in.rule)) return choice;
+    next.steps = steps;
+    choice = next;
+    if (size == in.longest) return choice;
+  }
+}
+
 }  // namespace
 
 Status BlockSizeRule::Validate() const {
@@ -85,31 +143,19 @@ Expected<BlockSizeChoice> ChooseBlockSize(std::span<const Segment3> segments,
                       kBlockSizeRuleStage,
                       "the scene box must have a finite, non-zero extent");
     BlockSizeChoice choice;
-    choice.block_size = longest;
-    choice.occupied_blocks = segments.empty() ? 0 : 1;
-    choice.mean_segments_per_block = static_cast<double>(segments.size());
-    if (segments.empty()) return choice;
-    choice.mean_planes_per_block =
-        static_cast<double>(Occupancy(segments, memberships, Grid(box, longest)).second);
-    const double floor = rule.min_block_lengths * MedianLength(segments);
-    while ((choice.mean_segments_per_block > rule.target_segments_per_block ||
-            choice.mean_planes_per_block > rule.target_planes_per_block) &&
-           choice.halvings < kMaxHalvings) {
-      const double size = std::ldexp(longest, -(choice.halvings + 1));
-      if (size < floor) {
-        choice.limited_by_length = true;
-        break;
-      }
-      const BlockGrid grid = Grid(box, size);
-      choice.block_size = size;
-      ++choice.halvings;
-      const auto [occupied, block_planes] = Occupancy(segments, memberships, grid);
-      choice.occupied_blocks = occupied;
-      choice.mean_segments_per_block =
-          static_cast<double>(segments.size()) / static_cast<double>(occupied);
-      choice.mean_planes_per_block =
-          static_cast<double>(block_planes) / static_cast<double>(occupied);
+    if (segments.empty()) {
+      choice.block_size = longest;
+    } else {
+      const RuleInput in{.segments = segments,
+                         .memberships = memberships,
+                         .box = box,
+                         .rule = rule,
+                         .longest = longest,
+                         .floor = rule.min_block_lengths * MedianLength(segments)};
+      choice = rule.ladder == BlockSizeLadder::kHalvingsOfTheExtent ? HalveTheExtent(in)
+                                                                    : ClimbFromTheFloor(in);
     }
+    choice.whole_scene = choice.block_size == longest;
     return choice;
   });
 }
