@@ -58,18 +58,18 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
     BlockPartitionStats& stats = out.stats;
     stats.automatic_size = options.block_size == 0.0;
     stats.block_size = options.block_size;
+    const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
     if (stats.automatic_size) {
       stats.size_choice = ValueOrThrow(partition::ChooseBlockSize(
           scene.segments.raw(), box, options.size_rule, scene.memberships.raw()));
       stats.block_size = partition::SizeClearOfParallelPlanes(
-          box, stats.size_choice.block_size, scene.planes.raw());
+          box, stats.size_choice.block_size, scene.planes.raw(), scene.segments.raw(), inliers);
     }
     const partition::BlockGrid grid =
         ValueOrThrow(partition::BlockGrid::Create(box, stats.block_size));
     stats.dims = grid.dims();
 
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
     for (const auto& list : inliers) stats.planes_without_inliers += list.empty() ? 1 : 0;
     out.regions = ValueOrThrow(partition::ComputePlaneSupport(
         grid, scene.segments.raw(), scene.planes.raw(), inliers, options.support, ctx));

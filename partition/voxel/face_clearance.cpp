@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,8 @@ namespace linesurf::partition {
 namespace {
 
 constexpr int kSteps = 1024;
+/// A plane's inliers form a slab along an axis when they span less than this many block sizes.
+constexpr double kSlabWidth = 0.1;
 
 // The range of the plane's coordinate along `axis` over the box, when that range is narrower
 // than `width`; empty (lo > hi) otherwise.
@@ -36,20 +39,79 @@ std::pair<double, double> NarrowRange(const Plane3& plane,
   return {lo, hi};
 }
 
-using AxisRanges = std::array<std::vector<std::pair<double, double>>, 3>;
+/// Per axis, coordinate ranges that faces must keep off: sorted by their low end, with the
+/// running maximum of the high ends, so a face is tested in O(log n).
+class AxisRanges {
+ public:
+  void Add(int axis, std::pair<double, double> range) { ranges_[axis].push_back(range); }
+
+  void Seal() {
+    for (int a = 0; a < 3; ++a) {
+      std::sort(ranges_[a].begin(), ranges_[a].end());
+      max_hi_[a].resize(ranges_[a].size());
+      double hi = -std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < ranges_[a].size(); ++i) {
+        hi = std::max(hi, ranges_[a][i].second);
+        max_hi_[a][i] = hi;
+      }
+    }
+  }
+
+  /// Whether `x` lies within `margin` of a range along `axis` (after Seal).
+  [[nodiscard]] bool Near(int axis, double x, double margin) const {
+    const auto& r = ranges_[axis];
+    const auto end =
+        std::upper_bound(r.begin(), r.end(), x + margin, [](double v, const auto& range) {
+          return v < range.first;
+        });
+    if (end == r.begin()) return false;
+    return max_hi_[axis][static_cast<std::size_t>(end - r.begin()) - 1] >= x - margin;
+  }
+
+ private:
+  std::array<std::vector<std::pair<double, double>>, 3> ranges_;
+  std::array<std::vector<double>, 3> max_hi_;
+};
 
 bool FacesClear(const Box3& box, double size, const AxisRanges& ranges, double margin) {
   for (int a = 0; a < 3; ++a) {
     const double extent = box.max[a] - box.min[a];
     const int blocks = std::max(1, static_cast<int>(std::ceil(extent / size)));
     for (int i = 1; i < blocks; ++i) {
-      const double face = box.min[a] + i * size;
-      for (const auto& [lo, hi] : ranges[a]) {
-        if (face >= lo - margin && face <= hi + margin) return false;
-      }
+      if (ranges.Near(a, box.min[a] + i * size, margin)) return false;
     }
   }
   return true;
+}
+
+/// The first size of the search whose faces clear `ranges`, if any.
+std::optional<double> FirstClearSize(const Box3& box,
+                                     double size,
+                                     const AxisRanges& ranges,
+                                     double clearance) {
+  for (int k = 0; k < kSteps; ++k) {
+    const double s = size * (1.0 + static_cast<double>(k) / kSteps);
+    if (FacesClear(box, s, ranges, clearance * s)) return s;
+  }
+  return std::nullopt;
+}
+
+/// Adds, per axis, the span of each plane's inlier endpoints when it is narrower than `width`.
+void AddInlierSlabs(std::span<const Segment3> segments,
+                    std::span<const std::vector<SegmentId>> inliers,
+                    double width,
+                    AxisRanges& ranges) {
+  for (const std::vector<SegmentId>& list : inliers) {
+    if (list.empty()) continue;
+    Box3 span;
+    for (const SegmentId id : list) {
+      span.Extend(segments[id.index()].p1);
+      span.Extend(segments[id.index()].p2);
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (span.max[a] - span.min[a] < width) ranges.Add(a, {span.min[a], span.max[a]});
+    }
+  }
 }
 
 }  // namespace
@@ -57,20 +119,25 @@ bool FacesClear(const Box3& box, double size, const AxisRanges& ranges, double m
 double SizeClearOfParallelPlanes(const Box3& box,
                                  double size,
                                  std::span<const Plane3> planes,
+                                 std::span<const Segment3> segments,
+                                 std::span<const std::vector<SegmentId>> inliers,
                                  double clearance) {
   AxisRanges ranges;
   const double width = clearance * size;
   for (const Plane3& plane : planes) {
     for (int a = 0; a < 3; ++a) {
       const auto range = NarrowRange(plane, box, a, width);
-      if (range.first <= range.second) ranges[a].push_back(range);
+      if (range.first <= range.second) ranges.Add(a, range);
     }
   }
-  for (int k = 0; k < kSteps; ++k) {
-    const double s = size * (1.0 + static_cast<double>(k) / kSteps);
-    if (FacesClear(box, s, ranges, clearance * s)) return s;
+  ranges.Seal();
+  if (!inliers.empty()) {
+    AxisRanges with_slabs = ranges;
+    AddInlierSlabs(segments, inliers, kSlabWidth * size, with_slabs);
+    with_slabs.Seal();
+    if (const auto s = FirstClearSize(box, size, with_slabs, clearance)) return *s;
   }
-  return size;
+  return FirstClearSize(box, size, ranges, clearance).value_or(size);
 }
 
 }  // namespace linesurf::partition

@@ -51,5 +51,49 @@ TEST(SizeClearOfParallelPlanes, KeepsTheSizeWhenNoParallelPlaneIsNearAFace) {
   EXPECT_EQ(SizeClearOfParallelPlanes(box, size, {}), size);
 }
 
+// A noisy wall near y = -4, tilted enough (1e-3) that over the box it is not parallel to the
+// faces, with its inliers in a 2.5 cm slab: 6 m blocks from y = -10 put a face through the slab.
+// Without the inliers the size stays; with them it moves just past the slab.
+TEST(SizeClearOfParallelPlanes, MovesAFaceOutOfTheSlabOfANoisyWallsInliers) {
+  Box3 box;
+  box.Extend(Vec3::Constant(-10.0));
+  box.Extend(Vec3::Constant(14.0));
+  const double size = 6.0;
+  const std::vector<Plane3> wall{{Vec3(0, -4.003, 0), Vec3(0.001, 1, 0).normalized()}};
+  std::vector<Segment3> segments;
+  for (int i = 0; i < 8; ++i) {
+    const double y = -4.003 + ((i % 3) - 1) * 0.0125;
+    segments.push_back({Vec3(-3, y, 0.5 + 0.4 * i), Vec3(3, y, 0.5 + 0.4 * i)});
+  }
+  std::vector<std::vector<SegmentId>> inliers(1);
+  for (std::size_t i = 0; i < segments.size(); ++i) inliers[0].emplace_back(i);
+  EXPECT_EQ(SizeClearOfParallelPlanes(box, size, wall), size);
+  const double moved = SizeClearOfParallelPlanes(box, size, wall, segments, inliers);
+  EXPECT_GT(moved, size);
+  EXPECT_LT(moved, size * 1.01);
+  const BlockGrid after = std::move(BlockGrid::Create(box, moved)).value();
+  EXPECT_GE(FaceDistance(after, 1, -4.003), 0.0125);
+}
+
+// Slabs side by side over [-4, 2.5] leave no size of the search a clear first face along y (it
+// lies in [-4, 2)): the size is then the first that clears the planes alone.
+TEST(SizeClearOfParallelPlanes, FallsBackToThePlanesWhenNoSizeClearsTheSlabs) {
+  Box3 box;
+  box.Extend(Vec3::Constant(-10.0));
+  box.Extend(Vec3::Constant(14.0));
+  const double size = 6.0;
+  std::vector<Segment3> segments;
+  std::vector<std::vector<SegmentId>> inliers;
+  for (int i = 0; i < 11; ++i) {
+    const double lo = -4.0 + 0.59 * i;
+    segments.push_back({Vec3(-3, lo, -3), Vec3(3, lo + 0.59, 3)});
+    inliers.push_back({SegmentId(static_cast<std::size_t>(i))});
+  }
+  // Every plane lies on y = -4, where 6 m puts the first face: the planes alone move it a step.
+  const std::vector<Plane3> planes(inliers.size(), Plane3{Vec3(0, -4, 0), Vec3::UnitY()});
+  const double moved = SizeClearOfParallelPlanes(box, size, planes, segments, inliers);
+  EXPECT_EQ(moved, size * (1.0 + 1.0 / 1024));
+}
+
 }  // namespace
 }  // namespace linesurf::partition
