@@ -96,10 +96,8 @@ BlockSizeChoice HalveTheExtent(const RuleInput& in) {
 
 BlockSizeChoice ClimbFromTheFloor(const RuleInput& in) {
   BlockSizeChoice choice = Measure(in, std::min(in.floor, in.longest));
-  if (!MeetsTargets(choice, in.rule) || in.floor >= in.longest) {
-    choice.limited_by_length = !MeetsTargets(choice, in.rule);
-    return choice;
-  }
+  choice.limited_by_length = !MeetsTargets(choice, in.rule);
+  if (choice.limited_by_length || in.floor >= in.longest) return choice;
   for (int steps = 1;; ++steps) {
     const double size = std::min(in.floor * std::exp2(0.25 * steps), in.longest);
     BlockSizeChoice next = Measure(in, size);

@@ -130,13 +130,13 @@ double SizeClearOfParallelPlanes(const Box3& box,
       if (range.first <= range.second) ranges.Add(a, range);
     }
   }
-  ranges.Seal();
   if (!inliers.empty()) {
     AxisRanges with_slabs = ranges;
     AddInlierSlabs(segments, inliers, kSlabWidth * size, with_slabs);
     with_slabs.Seal();
     if (const auto s = FirstClearSize(box, size, with_slabs, clearance)) return *s;
   }
+  ranges.Seal();
   return FirstClearSize(box, size, ranges, clearance).value_or(size);
 }
 
