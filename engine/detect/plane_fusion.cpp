@@ -1,22 +1,56 @@
 #include "engine/detect/plane_fusion.h"
 
+#include "engine/detect/segment_bvh.h"
+#include "engine/detect/segment_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <set>
 #include <span>
 #include <tuple>
 
-#include "engine/detect/segment_geometry.h"
-
 namespace linesurf::detect {
 namespace {
+
+/// Supports larger than this are searched through the slab indexes of their pieces rather than
+/// walked: a merged ground of the whole city is met again by every piece of ground around it.
+constexpr std::size_t kIndexedSupport = 256;
+
+/// The support of one input plane, with a hierarchy for slab queries built on first use. A merged
+/// plane's support is the union of its input planes' (merges take unions), so it is searched
+/// through their pieces and no index is rebuilt when the ground grows by one more piece.
+class SupportPiece {
+ public:
+  explicit SupportPiece(std::vector<SegmentId> inliers) : inliers_(std::move(inliers)) {}
+
+  /// Appends to `hits` every inlier whose box meets the slab |n.(x - o)| <= half_thickness.
+  void CollectInSlab(std::span<const Segment3> segments,
+                     const Plane3& plane,
+                     double half_thickness,
+                     std::vector<SegmentId>& hits) {
+    if (!bvh_) {
+      std::vector<Segment3> own;
+      own.reserve(inliers_.size());
+      for (const SegmentId s : inliers_) own.push_back(segments[s.index()]);
+      bvh_ = std::make_unique<SegmentBvh>(own);
+    }
+    bvh_->ForEachInSlab(
+        plane, half_thickness, [&](SegmentId local) { hits.push_back(inliers_[local.index()]); });
+  }
+
+ private:
+  std::vector<SegmentId> inliers_;
+  std::unique_ptr<SegmentBvh> bvh_;
+};
 
 struct FusionNode {
   SupportedPlane data;
   Box3 box;  ///< of the inliers' endpoints
   std::size_t key = 0;  ///< output position: the smallest input index among its parents
   bool alive = true;
+  std::vector<std::shared_ptr<SupportPiece>> pieces;  ///< their union is data.inliers
 };
 
 Box3 InlierBox(std::span<const Segment3> segments, const std::vector<SegmentId>& inliers) {
@@ -44,52 +78,82 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
   return out;
 }
 
-/// Whether some point of the inliers' box lies within `tolerance` of `plane`, with a relative
-/// slack for rounding. Both segment distances (mean and max of the endpoints') are at least the
-/// smallest distance over the box, so no inlier of a box that misses the slab is within it.
-bool BoxMeetsSlab(const Box3& box, const Plane3& plane, double tolerance) {
-  const double slack =
-      1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + plane.point.norm());
-  return BoxMeetsSlab(box.Center(), 0.5 * box.Extent(), plane, tolerance + slack);
+/// `tolerance` plus a slack for rounding, relative to the sizes and places of `box` and `plane`.
+double SlabTolerance(const Box3& box, const Plane3& plane, double tolerance) {
+  return tolerance +
+         1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + plane.point.norm());
 }
 
-/// The segments of the two supports that may lie within `tolerance` of both planes, held in
-/// `storage` when it takes a union: the inliers of a node whose box misses the other plane's
-/// slab cannot (the ground against a roof: its support of the whole city is skipped without a
-/// look at its segments).
-std::span<const SegmentId> SharedCandidates(const FusionNode& a, const FusionNode& b,
-                                            double tolerance, std::vector<SegmentId>& storage) {
-  const bool a_near_b = BoxMeetsSlab(a.box, b.data.plane, tolerance);
-  const bool b_near_a = BoxMeetsSlab(b.box, a.data.plane, tolerance);
-  if (a_near_b && b_near_a) {
-    storage = UnionOf(a.data.inliers, b.data.inliers);
-    return storage;
+/// Whether some point of the inliers' box lies within `tolerance` of `plane` (with the slack).
+/// Both segment distances (mean and max of the endpoints') are at least the smallest distance
+/// over the segment's box, so no inlier of a box that misses the slab is within it.
+bool BoxMeetsSlab(const Box3& box, const Plane3& plane, double tolerance) {
+  return BoxMeetsSlab(
+      box.Center(), 0.5 * box.Extent(), plane, SlabTolerance(box, plane, tolerance));
+}
+
+/// Whether at least `needed` (and at least one) segments of the two supports lie within
+/// params.epsilon of both planes, each segment counted once. The smaller support is walked; the
+/// larger is walked too when small, and otherwise searched through its pieces' indexes for the
+/// segments that can lie within epsilon of the smaller's plane (the merged ground of a city
+/// against one more piece of ground looks at the band where the two planes meet, not at the
+/// whole ground). A support whose box misses the other plane's slab cannot count and is
+/// skipped. The walks stop as soon as the answer is known.
+bool SharesEnough(std::span<const Segment3> segments,
+                  const FusionParameters& params,
+                  const FusionNode& node_a,
+                  const FusionNode& node_b,
+                  double needed) {
+  const bool a_is_smaller = node_a.data.inliers.size() <= node_b.data.inliers.size();
+  const FusionNode& small = a_is_smaller ? node_a : node_b;
+  const FusionNode& large = a_is_smaller ? node_b : node_a;
+  const auto near_both = [&](SegmentId s) {
+    const Segment3& seg = segments[s.index()];
+    return SegmentPlaneDistance(seg, small.data.plane, params.distance) <= params.epsilon &&
+           SegmentPlaneDistance(seg, large.data.plane, params.distance) <= params.epsilon;
+  };
+  const double goal = std::max(needed, 1.0);
+  double shared = 0.0;
+  const bool small_counts = BoxMeetsSlab(small.box, large.data.plane, params.epsilon);
+  if (small_counts) {
+    for (const SegmentId s : small.data.inliers) {
+      if (near_both(s) && ++shared >= goal) return true;
+    }
   }
-  if (a_near_b) return a.data.inliers;
-  if (b_near_a) return b.data.inliers;
-  return {};
+  if (!BoxMeetsSlab(large.box, small.data.plane, params.epsilon)) return false;
+  std::span<const SegmentId> candidates = large.data.inliers;
+  std::vector<SegmentId> hits;
+  if (candidates.size() > kIndexedSupport) {
+    const double half_thickness = SlabTolerance(large.box, small.data.plane, params.epsilon);
+    for (const auto& piece : large.pieces) {
+      piece->CollectInSlab(segments, small.data.plane, half_thickness, hits);
+    }
+    std::sort(hits.begin(), hits.end());  // pieces may share segments: each counts once
+    hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
+    candidates = hits;
+  }
+  for (const SegmentId s : candidates) {
+    // A segment of both supports was counted with the smaller one.
+    if (small_counts &&
+        std::binary_search(small.data.inliers.begin(), small.data.inliers.end(), s)) {
+      continue;
+    }
+    if (near_both(s) && ++shared >= goal) return true;
+  }
+  return false;
 }
 
 /// Angle of a mergeable pair, or a negative value when the pair does not qualify.
-double PairAngle(std::span<const Segment3> segments, const FusionParameters& params,
-                 const FusionNode& node_a, const FusionNode& node_b) {
-  const SupportedPlane& a = node_a.data;
-  const SupportedPlane& b = node_b.data;
-  const double angle = AngleBetween(a.plane, b.plane);
-  if (angle >= params.max_angle_rad) return -1.0;
+double PairAngle(std::span<const Segment3> segments,
+                 const FusionParameters& params,
+                 const FusionNode& node_a,
+                 const FusionNode& node_b) {
   if (BoxGap(node_a.box, node_b.box) > params.max_gap) return -1.0;
-  const std::size_t smaller = std::min(a.inliers.size(), b.inliers.size());
+  const double angle = AngleBetween(node_a.data.plane, node_b.data.plane);
+  if (angle >= params.max_angle_rad) return -1.0;
+  const std::size_t smaller = std::min(node_a.data.inliers.size(), node_b.data.inliers.size());
   const double needed = params.min_shared_fraction * static_cast<double>(smaller);
-  std::size_t shared = 0;
-  std::vector<SegmentId> storage;
-  for (const SegmentId s : SharedCandidates(node_a, node_b, params.epsilon, storage)) {
-    const Segment3& seg = segments[s.index()];
-    if (SegmentPlaneDistance(seg, a.plane, params.distance) <= params.epsilon &&
-        SegmentPlaneDistance(seg, b.plane, params.distance) <= params.epsilon) {
-      ++shared;
-    }
-  }
-  return static_cast<double>(shared) >= needed && shared > 0 ? angle : -1.0;
+  return SharesEnough(segments, params, node_a, node_b, needed) ? angle : -1.0;
 }
 
 }  // namespace
@@ -100,7 +164,8 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
   nodes.reserve(2 * planes.size());
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const Box3 box = InlierBox(segments, planes[i].inliers);
-    nodes.push_back({std::move(planes[i]), box, i, true});
+    auto piece = std::make_shared<SupportPiece>(planes[i].inliers);
+    nodes.push_back({std::move(planes[i]), box, i, true, {std::move(piece)}});
   }
   // Pending pairs ordered by (angle, i, j): a total order, so the greedy pass is deterministic.
   std::set<std::tuple<double, std::size_t, std::size_t>> queue;
@@ -124,11 +189,14 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
     if (!thin) continue;
     nodes[i].alive = false;
     nodes[j].alive = false;
+    std::vector<std::shared_ptr<SupportPiece>> pieces = std::move(nodes[i].pieces);
+    pieces.insert(pieces.end(), nodes[j].pieces.begin(), nodes[j].pieces.end());
+    nodes[j].pieces.clear();
     const std::size_t key = std::min(nodes[i].key, nodes[j].key);
     Box3 box = nodes[i].box;
     box.Extend(nodes[j].box.min);
     box.Extend(nodes[j].box.max);
-    nodes.push_back({SupportedPlane{plane, std::move(merged)}, box, key, true});
+    nodes.push_back({SupportedPlane{plane, std::move(merged)}, box, key, true, std::move(pieces)});
     ++merges;
     const std::size_t fresh = nodes.size() - 1;
     for (std::size_t k = 0; k < fresh; ++k) {

@@ -58,5 +58,40 @@ TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
   EXPECT_EQ(local.size(), 2u);
 }
 
+TEST(FusePlanes, ALargeSupportSharesTheSegmentsInTheOtherPlanesSlabWhereverTheyLie) {
+  // A: the ground z = 0 over x in [0, 300], support large enough to be searched through its
+  // index. B: a piece of it near x = 0 whose fit tilts: its plane is 0.04 above the ground at
+  // x = 0 (its own segments are farther than eps from it) and meets the ground at x = 150, so
+  // the shared support is the ground's segments from x = 75 to 225 alone.
+  std::vector<Segment3> segments;
+  for (int i = 0; i <= 300; ++i) segments.push_back({Vec3(i, 0, 0), Vec3(i + 0.3, 1, 0)});
+  for (int i = 0; i < 4; ++i) {
+    segments.push_back({Vec3(0.25 * i, 0, 0), Vec3(0.25 * i + 0.3, 1, 0)});
+  }
+  std::vector<SupportedPlane> planes(2);
+  planes[0].plane.normal = Vec3::UnitZ();
+  planes[0].plane.point = Vec3::Zero();
+  for (int i = 0; i <= 300; ++i) planes[0].inliers.emplace_back(static_cast<std::uint32_t>(i));
+  planes[1].plane.normal = Vec3(0.04 / 150.0, 0, 1).normalized();
+  planes[1].plane.point = Vec3(0, 0, 0.04);
+  planes[1].inliers = Ids({301, 302, 303, 304});
+  FusionParameters params;
+  params.epsilon = 0.02;
+  params.epsilon_fusion = 0.06;
+  params.max_angle_rad = 0.17;
+  params.min_shared_fraction = 0.2;
+  EXPECT_EQ(FusePlanes(segments, params, planes), 1);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].inliers.size(), 305u);
+  // Without the band the two share nothing: B moved up by 1 is refused.
+  planes.assign(2, SupportedPlane{});
+  planes[0].plane.normal = Vec3::UnitZ();
+  for (int i = 0; i <= 300; ++i) planes[0].inliers.emplace_back(static_cast<std::uint32_t>(i));
+  planes[1].plane.normal = Vec3(0.04 / 150.0, 0, 1).normalized();
+  planes[1].plane.point = Vec3(0, 0, 1.04);
+  planes[1].inliers = Ids({301, 302, 303, 304});
+  EXPECT_EQ(FusePlanes(segments, params, planes), 0);
+}
+
 }  // namespace
 }  // namespace linesurf::detect
