@@ -104,6 +104,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.quality.samples_per_segment, e.quality.samples_per_segment);
   EXPECT_EQ(o.quality.min_lines_per_component, e.quality.min_lines_per_component);
   EXPECT_EQ(o.triangulate, e.triangulate);
+  EXPECT_EQ(o.merge_coplanar, e.merge_coplanar);
   EXPECT_EQ(o.num_threads, e.num_threads);
   EXPECT_EQ(o.seed, e.seed);
 }
@@ -132,6 +133,16 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
        [](ReconstructOptions& o) {
          o.engine = ComplexEngine::kMonolithic;
          o.block_size = 3.0;
+       }},
+      {"merge_coplanar",
+       [](ReconstructOptions& o) {
+         o.engine = ComplexEngine::kMonolithic;
+         o.merge_coplanar = true;
+       }},
+      {"merge_coplanar",
+       [](ReconstructOptions& o) {
+         o.merge_coplanar = true;
+         o.triangulate = true;
        }},
       {"support_gap", [](ReconstructOptions& o) { o.detection.support_gap = -1.0; }},
       {"weights.open_seam", [](ReconstructOptions& o) { o.weights.open_seam = 1e7; }},

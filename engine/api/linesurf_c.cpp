@@ -181,6 +181,7 @@ const std::map<std::string_view, NumberSetter>& NumberSetters() {
       {"quality.min_lines_per_component",
        NestedInteger(&ReconstructOptions::quality, &QualityOptions::min_lines_per_component)},
       {"triangulate", Flag(&ReconstructOptions::triangulate)},
+      {"merge_coplanar", Flag(&ReconstructOptions::merge_coplanar)},
       {"num_threads", Integer(&ReconstructOptions::num_threads)},
       {"seed", Integer(&ReconstructOptions::seed)},
   };

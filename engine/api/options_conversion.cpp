@@ -54,6 +54,12 @@ Status ValidateBlocks(ComplexEngine engine, double block_size, double block_marg
   return ValidateBlockMargin(block_margin);
 }
 
+Status ValidateMergeCoplanar(ComplexEngine engine, bool merge_coplanar, bool triangulate) {
+  const Status s = pipeline::ValidateMergeCoplanar(ToEngine(engine), merge_coplanar, triangulate);
+  if (!s) return Error{ErrorCode::kInvalidOptions, kOptionsConversionStage, s.error().message};
+  return {};
+}
+
 /// The engine's own check of the quality fields, named as the facade's.
 Status ValidateQuality(const QualityOptions& quality) {
   pipeline::SurfaceQualityOptions o;
@@ -122,6 +128,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.remove_floating_fragments = options.remove_floating_fragments;
   SetEngineQuality(options.quality, o.quality);
   o.triangulate = options.triangulate;
+  o.merge_coplanar = options.merge_coplanar;
   o.num_threads = options.num_threads;
   o.seed = options.seed;
   return o;
@@ -223,6 +230,7 @@ Status ReconstructOptions::Validate() const noexcept {
   }
   if (!ComplexEngineName(engine)[0]) return Bad("engine", "is not a ComplexEngine");
   if (Status s = api::ValidateBlocks(engine, block_size, block_margin); !s) return s;
+  if (Status s = api::ValidateMergeCoplanar(engine, merge_coplanar, triangulate); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) return Bad("box_margin", "must be in (0, 10]");
   if (Status s = api::ValidateQuality(quality); !s) return s;
   if (Status s = api::ValidateThreads(num_threads); !s) return s;

@@ -12,8 +12,8 @@ namespace linesurf::io {
 struct MeshWriteOptions {
   /// PLY only: write `format ascii 1.0` instead of binary little-endian (OBJ/OFF are always text).
   bool ascii = false;
-  /// Split every face with more than 3 vertices into a fan of triangles around its first vertex
-  /// (exact for the convex faces linesurf produces); default keeps polygons.
+  /// Split every face with more than 3 vertices into triangles (FaceTriangles: the fan around
+  /// its first vertex when convex, ear clipping when not); default keeps polygons.
   bool triangulate = false;
 };
 

@@ -1,14 +1,15 @@
 // Mesh writers: PLY (binary little-endian or ASCII), OBJ, OFF.
 
-#include <bit>
-#include <cmath>
-#include <cstring>
-
 #include "engine/core/exception.h"
+#include "engine/core/face_triangulation.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/mesh_io.h"
 #include "engine/io/number_text.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
 
 namespace linesurf::io {
 namespace {
@@ -59,7 +60,7 @@ FaceList CheckedFaces(const PolygonMesh& mesh, const MeshWriteOptions& options,
           file << ": face " << f << " uses vertex " << i << " of " << mesh.vertices.size());
     }
     if (options.triangulate) {
-      for (std::size_t k = 1; k + 1 < face.size(); ++k) faces.Add({face[0], face[k], face[k + 1]});
+      for (const auto& [a, b, c] : FaceTriangles(mesh.vertices, face)) faces.Add({a, b, c});
     } else {
       faces.indices.insert(faces.indices.end(), face.begin(), face.end());
       faces.offsets.push_back(static_cast<std::uint32_t>(faces.indices.size()));

@@ -71,6 +71,22 @@ Status ValidateEngineBlockSize(Engine engine, double block_size, const BlockFiel
                    names.detection_block_size + ")"};
 }
 
+Status ValidateMergeCoplanar(Engine engine, bool merge_coplanar, bool triangulate) {
+  if (!merge_coplanar) return {};
+  if (engine != Engine::kBlocks) {
+    return Error{ErrorCode::kInvalidOptions,
+                 "reconstruct_options",
+                 "merge_coplanar applies to the blocks engine only (the monolithic one has no "
+                 "block faces to merge across)"};
+  }
+  if (triangulate) {
+    return Error{ErrorCode::kInvalidOptions,
+                 "reconstruct_options",
+                 "merge_coplanar gives non-convex faces: not with triangulate"};
+  }
+  return {};
+}
+
 Status ReconstructOptions::Validate() const {
   if (Status s = sanitize.Validate(); !s) return s;
   if (!use_given_planes) {
@@ -82,6 +98,7 @@ Status ReconstructOptions::Validate() const {
   if (Status s = blocks.Validate(); !s) return s;
   if (Status s = detection_blocks.Validate(); !s) return s;
   if (Status s = ValidateEngineBlockSize(engine, blocks.block_size); !s) return s;
+  if (Status s = ValidateMergeCoplanar(engine, merge_coplanar, triangulate); !s) return s;
   if (Status s = quality.Validate(); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
@@ -252,6 +269,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     ExtractOptions extract;
     extract.outside_full = interior;
     extract.triangulate = options.triangulate;
+    extract.merge_coplanar = options.merge_coplanar;
     if (prepared.blocks) {
       BlockExtractResult surface = ValueOrThrow(
           ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));

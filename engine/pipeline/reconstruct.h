@@ -54,6 +54,10 @@ struct BlockFieldNames {
                                              double block_size,
                                              const BlockFieldNames& names = {});
 
+/// The rule for merging coplanar faces, for every options layer: only the blocks engine has
+/// seams to merge across, and merged faces may be non-convex, so not with triangulate.
+[[nodiscard]] Status ValidateMergeCoplanar(Engine engine, bool merge_coplanar, bool triangulate);
+
 struct ReconstructOptions {
   SanitizeOptions sanitize;
   /// Plane detection (ignored with use_given_planes). Its seed is replaced by `seed`.
@@ -97,6 +101,10 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
+  /// Blocks engine: neighbouring faces of one plane split only by block faces become one
+  /// polygon (ExtractOptions::merge_coplanar), which may be non-convex; not with triangulate.
+  /// Default false: the blocks' facets.
+  bool merge_coplanar = false;
   /// Worker threads: 0 = automatic, 1 = serial. Results do not depend on it.
   int num_threads = 0;
   /// Seed of every random stream (plane detection); same input + options + seed => same mesh.

@@ -1,6 +1,7 @@
 #include "partition/mesh/triangle_tree.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/face_triangulation.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -52,10 +53,9 @@ TriangleTree::TriangleTree(const PolygonMesh& mesh, std::string_view stage, std:
                         name << " mesh: face " << f << " refers to vertex " << v << " of "
                              << mesh.vertices.size());
     }
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      const Triangle t(ToPoint(mesh.vertices[face[0]]),
-                       ToPoint(mesh.vertices[face[k]]),
-                       ToPoint(mesh.vertices[face[k + 1]]));
+    for (const auto& [a, b, c] : FaceTriangles(mesh.vertices, face)) {
+      const Triangle t(
+          ToPoint(mesh.vertices[a]), ToPoint(mesh.vertices[b]), ToPoint(mesh.vertices[c]));
       if (t.is_degenerate()) continue;  // exact collinearity test; no area, never nearest
       impl_->triangles.push_back(t);
       impl_->triangle_face.push_back(static_cast<std::uint32_t>(f));

@@ -1,9 +1,9 @@
 #pragma once
 /// @file triangle_tree.h
-/// @brief The faces of a polygon mesh fanned into triangles, in a CGAL AABB tree (Epick: exact
-/// predicates) for nearest-point, distance and segment queries. One helper for every tool that
-/// measures a mesh (surface quality without ground truth, evaluation against one); CGAL stays in
-/// the implementation.
+/// @brief The faces of a polygon mesh split into triangles (FaceTriangles), in a CGAL AABB tree
+/// (Epick: exact predicates) for nearest-point, distance and segment queries. One helper for every
+/// tool that measures a mesh (surface quality without ground truth, evaluation against one); CGAL
+/// stays in the implementation.
 
 #include "engine/core/geometry.h"
 #include "engine/core/polygon_mesh.h"
@@ -18,8 +18,9 @@ namespace linesurf::partition {
 
 class TriangleTree {
  public:
-  /// Fans every face from its first corner; degenerate triangles (exact collinearity test) have
-  /// no area and are skipped. Throws kInvalidInput (stage `stage`, message starting with `name`)
+  /// Splits every face into triangles (FaceTriangles: the fan from its first corner when convex,
+  /// ear clipping when not); degenerate triangles (exact collinearity test) have no area and are
+  /// skipped. Throws kInvalidInput (stage `stage`, message starting with `name`)
   /// when face offsets or indices are out of range or no triangle has positive area.
   TriangleTree(const PolygonMesh& mesh, std::string_view stage, std::string_view name);
   ~TriangleTree();

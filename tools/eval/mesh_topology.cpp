@@ -120,16 +120,19 @@ MeshTopology Check(const PolygonMesh& mesh) {
     faces.push_back(std::move(face));
   }
 
-  // Area and signed volume over a fan triangulation (exact for planar convex faces; the volume
-  // is exact for any closed polygon mesh because the fan's inner edges cancel).
+  // Area and signed volume over a fan triangulation: a planar face's area is the length of the
+  // sum of its fan's vector areas, convex or not (merged faces are not), and the volume is exact
+  // for any closed polygon mesh because the fan's inner edges cancel.
   for (const auto& face : faces) {
     const Vec3& a = mesh.vertices[face[0]];
+    Vec3 vector_area = Vec3::Zero();
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
       const Vec3& b = mesh.vertices[face[k]];
       const Vec3& c = mesh.vertices[face[k + 1]];
-      topo.area += 0.5 * (b - a).cross(c - a).norm();
+      vector_area += 0.5 * (b - a).cross(c - a);
       topo.signed_volume += a.dot(b.cross(c)) / 6.0;
     }
+    topo.area += vector_area.norm();
   }
 
   // Directed edges (lo, hi, forward, face) sorted: groups are undirected edges.

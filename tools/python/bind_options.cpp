@@ -159,6 +159,9 @@ void BindOptions(py::module_& m) {
                  "drop components holding fewer than quality.min_lines_per_component lines")
           .Field("quality", &R::quality, "QualityOptions")
           .Field("triangulate", &R::triangulate, "triangulate the output faces")
+          .Field("merge_coplanar",
+                 &R::merge_coplanar,
+                 "blocks engine: coplanar faces split by block faces merged (not with triangulate)")
           .Field("num_threads", &R::num_threads, "worker threads (0 = automatic)")
           .Field("seed", &R::seed, "seed of every random stream")
           .Finish();

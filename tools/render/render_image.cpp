@@ -1,12 +1,13 @@
 #include "tools/render/render_image.h"
 
+#include "engine/core/exception.h"
+#include "engine/core/face_triangulation.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-
-#include "engine/core/exception.h"
 
 namespace linesurf {
 namespace {
@@ -185,10 +186,12 @@ void DrawMesh(Canvas& canvas, const Projector& proj, const PolygonMesh& mesh, in
     const Colour base = ToColour(facing ? kColourFront : kColourBackFace);
     const double shade = 0.4 + 0.6 * std::abs(normal.dot(light));
     const Colour colour{base[0] * shade, base[1] * shade, base[2] * shade};
-    const Vec3 p0 = proj.Project(mesh.vertices[face[0]]);
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      FillTriangle(canvas, p0, proj.Project(mesh.vertices[face[k]]),
-                   proj.Project(mesh.vertices[face[k + 1]]), colour);
+    for (const auto& [a, b, c] : FaceTriangles(mesh.vertices, face)) {
+      FillTriangle(canvas,
+                   proj.Project(mesh.vertices[a]),
+                   proj.Project(mesh.vertices[b]),
+                   proj.Project(mesh.vertices[c]),
+                   colour);
     }
   }
   const Colour outline = ToColour(kColourOutline);

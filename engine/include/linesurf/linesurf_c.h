@@ -97,8 +97,9 @@ LINESURF_API void linesurf_scene_free(linesurf_scene* scene);
 LINESURF_API linesurf_options* linesurf_options_create(void);
 LINESURF_API void linesurf_options_free(linesurf_options* options);
 /* Sets a numeric option by its C++ field path, e.g. "weights.visibility", "detection.epsilon",
- * "sigma", "seed", "num_threads", "triangulate" (0/1). Unknown names and values that do not fit
- * the field give LINESURF_ERROR_INVALID_OPTIONS; ranges are checked by linesurf_reconstruct. */
+ * "sigma", "seed", "num_threads", "triangulate", "merge_coplanar" (0/1). Unknown names and values
+ * that do not fit the field give LINESURF_ERROR_INVALID_OPTIONS; ranges are checked by
+ * linesurf_reconstruct. */
 LINESURF_API linesurf_status linesurf_options_set_number(linesurf_options* options,
                                                          const char* name,
                                                          double value,

@@ -192,6 +192,9 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
+  /// Blocks engine: neighbouring faces of one plane that only block faces split become one
+  /// polygon, which may be non-convex (not with triangulate). Default false: convex faces.
+  bool merge_coplanar = false;
   /// Worker threads: 0 = automatic, 1 = serial ([0, kMaxThreads]). Results do not depend on it.
   int num_threads = 0;
   /// Seed of every random stream: same input + options + seed => same mesh bytes.
@@ -223,7 +226,7 @@ struct ReadOptions {
 struct MeshWriteOptions {
   /// PLY only: ASCII instead of binary little-endian (OBJ and OFF are always text).
   bool ascii = false;
-  /// Split faces into triangle fans (exact for linesurf's convex faces).
+  /// Split faces into triangles: fans of convex faces, ear clipping of non-convex ones.
   bool triangulate = false;
 };
 

@@ -87,7 +87,8 @@ struct SceneData {
   }
 };
 
-/// @brief A polygon mesh: convex faces (triangles with ReconstructOptions::triangulate),
+/// @brief A polygon mesh: convex faces (triangles with ReconstructOptions::triangulate; with
+/// merge_coplanar, faces merged across block faces may be non-convex),
 /// counter-clockwise seen from outside (normals point from full to empty space).
 ///
 /// Face f uses face_indices[face_offsets[f] .. face_offsets[f + 1]) (indices into vertices).
