@@ -88,6 +88,17 @@ class ReconstructHouse(unittest.TestCase):
         with self.assertRaises(ValueError):
             self.result.mesh.triangles()
 
+    def test_merge_coplanar_gives_fewer_faces_of_the_same_solid(self):
+        blocks = linesurf.reconstruct(self.scene, scene_mode="exterior", block_size=3.0)
+        merged = linesurf.reconstruct(self.scene, scene_mode="exterior", block_size=3.0,
+                                      merge_coplanar=True)
+        self.assertLess(merged.mesh.num_faces, blocks.mesh.num_faces)
+        self.assertAlmostEqual(merged.report["mesh_volume"], blocks.report["mesh_volume"],
+                               delta=1e-9 * abs(blocks.report["mesh_volume"]))
+        with self.assertRaisesRegex(linesurf.InvalidOptions, "merge_coplanar"):
+            linesurf.reconstruct(self.scene, scene_mode="exterior", merge_coplanar=True,
+                                 triangulate=True)
+
     def test_options_reach_the_run(self):
         r = linesurf.reconstruct(self.scene, scene_mode="exterior", sigma=0.25,
                                  solver={"backend": "clp"},
