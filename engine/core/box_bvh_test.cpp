@@ -52,6 +52,43 @@ TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
   EXPECT_GT(total, 1000u);  // the rays do meet boxes
 }
 
+TEST(BoxBvh, ReportsExactlyTheBoxesASlabMeets) {
+  Rng rng(5);
+  std::vector<Box3> boxes;
+  for (int i = 0; i < 500; ++i) {
+    Box3 b;
+    const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
+    b.Extend(c);
+    b.Extend(c + Vec3(rng.Uniform(0, 2), i % 4 == 0 ? 0.0 : rng.Uniform(0, 2), rng.Uniform(0, 2)));
+    boxes.push_back(i % 50 == 3 ? Box3{} : b);
+  }
+  const BoxBvh bvh(boxes);
+  std::size_t total = 0;
+  for (int k = 0; k < 60; ++k) {
+    // Axis-aligned planes (zero normal components) and tilted ones, thin and thick slabs.
+    const Vec3 normal = k < 6 ? Vec3::Unit(k % 3) : Vec3(rng.Normal(), rng.Normal(), rng.Normal());
+    const Plane3 plane{Vec3(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10)),
+                       normal.normalized()};
+    const double half_thickness = k % 2 == 0 ? 0.0 : rng.Uniform(0, 1);
+    std::set<std::uint32_t> expected;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+      if (!boxes[i].IsEmpty() &&
+          BoxMeetsSlab(boxes[i].Center(), 0.5 * boxes[i].Extent(), plane, half_thickness)) {
+        expected.insert(i);
+      }
+    }
+    std::set<std::uint32_t> met;
+    EXPECT_FALSE(bvh.AnyInSlab(plane, half_thickness, [&](std::uint32_t i) {
+      EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
+      return false;
+    }));
+    EXPECT_EQ(met, expected);
+    EXPECT_LT(expected.size(), boxes.size());  // the slab leaves boxes out
+    total += expected.size();
+  }
+  EXPECT_GT(total, 1000u);  // the slabs do meet boxes
+}
+
 TEST(BoxBvh, RayMeetsBoxOnlyAheadAndOnItsBoundary) {
   Box3 b;
   b.Extend(Vec3(1, 0, 0));

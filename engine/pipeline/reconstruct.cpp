@@ -306,7 +306,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
                            judgement.warnings.end());
 
     // On a surface the judgement accepted (not empty, not inverted); the pieces left are closed.
-    // The removal measures the surface: when it removes nothing, those are the final figures.
+    // The removal measures the surface it returns: those are the final figures.
     std::optional<SurfaceQuality> measured;
     if (options.remove_floating_fragments) {
       timer.Start("fragments");
@@ -315,9 +315,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       if (kept.removed_components > 0) {
         result.mesh = std::move(kept.mesh);
         topology = CheckIndexTopology(result.mesh);
-      } else {
-        measured = std::move(kept.quality);
       }
+      measured = std::move(kept.quality);
       stats.removed_fragments = kept.removed_components;
       stats.removed_fragment_volume = kept.removed_volume;
       stats.removed_fragment_segments = kept.removed_supported_segments;

@@ -1,5 +1,6 @@
 #include "engine/pipeline/surface_quality.h"
 
+#include "engine/core/box_bvh.h"
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 #include "engine/core/median_segment_length.h"
@@ -24,9 +25,13 @@ namespace {
 constexpr const char* kSurfaceQualityStage = "surface_quality";
 /// Segments per parallel task; fixed so the chunking never depends on the thread count.
 constexpr std::size_t kSegmentGrain = 64;
+/// Planes per parallel task of the off-surface search.
+constexpr std::size_t kPlaneGrain = 16;
 constexpr int kMaxSamplesPerSegment = 1024;
 /// A vertex no kept face uses.
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+/// A removed component's new id.
+constexpr std::uint32_t kNoComponent = std::numeric_limits<std::uint32_t>::max();
 /// Parts of one line: every endpoint within this fraction of the median segment length of the
 /// other's line (as eps auto counts them).
 constexpr double kCollinearPartsOverMedianLength = 1e-5;
@@ -85,6 +90,9 @@ struct SegmentFigures {
   std::vector<std::pair<std::uint32_t, double>> near_by_component;
   double sight_length = 0.0;
   double clear_length = 0.0;
+  /// The components of every near sample's nearest face and of every face a sight ray meets,
+  /// sorted and unique, when asked for: the figures stay those of a surface without any other.
+  std::vector<std::uint32_t> components;
 };
 
 /// The sight ray eye -> p is clear unless it crosses a face whose plane lies farther than `fit`
@@ -109,7 +117,8 @@ SegmentFigures MeasureSegment(const Scene& scene,
                               bool supported,
                               const MeshIndex& index,
                               double fit,
-                              int samples) {
+                              int samples,
+                              bool list_components) {
   SegmentFigures out;
   const Segment3& seg = scene.segments[s];
   const double piece = seg.Length() / samples;
@@ -128,7 +137,16 @@ SegmentFigures MeasureSegment(const Scene& scene,
     for (ViewpointId v : scene.observations[s]) {
       out.sight_length += piece;
       if (IsClear(scene.viewpoints[v], p, tree, fit, hits)) out.clear_length += piece;
+      if (!list_components) continue;
+      for (const std::uint32_t t : hits)
+        out.components.push_back(index.face_component[tree.FaceOf(t)]);
     }
+  }
+  if (list_components) {
+    for (const auto& [c, length] : out.near_by_component) out.components.push_back(c);
+    std::sort(out.components.begin(), out.components.end());
+    out.components.erase(std::unique(out.components.begin(), out.components.end()),
+                         out.components.end());
   }
   return out;
 }
@@ -148,24 +166,36 @@ std::vector<std::uint32_t> LineOfSegment(const Scene& scene) {
   return line;
 }
 
+/// The planes on which no face lies (every corner within eps), in parallel over the planes. Each
+/// plane asks a box hierarchy of the faces for those near its slab and stops at the first one on
+/// it, where testing every face against every plane was quadratic in the scene.
 std::vector<std::uint32_t> PlanesOffSurface(const PolygonMesh& mesh,
                                             const Scene& scene,
                                             double eps) {
-  std::vector<bool> on(scene.planes.size(), false);
+  std::vector<Box3> boxes(mesh.NumFaces());
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const auto face = mesh.Face(f);
-    if (face.size() < 3) continue;
-    for (std::size_t p = 0; p < on.size(); ++p) {
-      if (on[p]) continue;
-      const Plane3& plane = scene.planes.raw()[p];
-      on[p] = std::all_of(face.begin(), face.end(), [&](std::uint32_t v) {
-        return std::abs(plane.SignedDistance(mesh.vertices[v])) <= eps;
-      });
-    }
+    if (face.size() < 3) continue;  // empty box: never met
+    for (std::uint32_t v : face) boxes[f].Extend(mesh.vertices[v]);
   }
+  const BoxBvh faces(boxes);
+  std::vector<char> on(scene.planes.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, on.size(), kPlaneGrain),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t p = range.begin(); p < range.end(); ++p) {
+                        const Plane3& plane = scene.planes.raw()[p];
+                        // Twice eps for the boxes: a rounding never prunes a face within eps.
+                        on[p] = faces.AnyInSlab(plane, 2.0 * eps, [&](std::uint32_t f) {
+                          const auto face = mesh.Face(f);
+                          return std::all_of(face.begin(), face.end(), [&](std::uint32_t v) {
+                            return std::abs(plane.SignedDistance(mesh.vertices[v])) <= eps;
+                          });
+                        });
+                      }
+                    });
   std::vector<std::uint32_t> off;
   for (std::size_t p = 0; p < on.size(); ++p) {
-    if (!on[p]) off.push_back(static_cast<std::uint32_t>(p));
+    if (on[p] == 0) off.push_back(static_cast<std::uint32_t>(p));
   }
   return off;
 }
@@ -187,39 +217,58 @@ struct ComponentFigures {
   std::vector<std::uint32_t> face_component;
 };
 
-ComponentFigures Analyse(const PolygonMesh& mesh,
-                         const Scene& scene,
-                         double epsilon,
-                         const SurfaceQualityOptions& options,
-                         const RunContext& ctx) {
+void ThrowIfMembershipsMismatch(const Scene& scene) {
   LINESURF_THROW_IF(
       scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
       kInvalidInput,
       kSurfaceQualityStage,
       "memberships: " << scene.memberships.size() << " for " << scene.NumSegments() << " segments");
-  const MeshIndex index = IndexMesh(mesh);
-  const double fit = options.fit_factor * epsilon;
-  const auto supported = [&](SegmentId s) {
-    return scene.HasMemberships() && scene.memberships[s].count > 0;
-  };
+}
 
-  std::vector<SegmentFigures> per_segment(scene.NumSegments());
+bool IsSupported(const Scene& scene, SegmentId s) {
+  return scene.HasMemberships() && scene.memberships[s].count > 0;
+}
+
+/// Measures, in parallel, the segments i for which `measure(i)` holds into per_segment[i].
+template <typename Pred>
+void MeasureSegments(const Scene& scene,
+                     const MeshIndex& index,
+                     const SurfaceQualityOptions& options,
+                     double fit,
+                     bool list_components,
+                     const RunContext& ctx,
+                     Pred&& measure,
+                     std::vector<SegmentFigures>& per_segment) {
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, scene.NumSegments(), kSegmentGrain),
       [&](const tbb::blocked_range<std::size_t>& r) {
         if (ctx.ShouldStop()) return;
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          if (!measure(i)) continue;
           const SegmentId s(static_cast<std::uint32_t>(i));
-          per_segment[i] =
-              MeasureSegment(scene, s, supported(s), index, fit, options.samples_per_segment);
+          per_segment[i] = MeasureSegment(scene,
+                                          s,
+                                          IsSupported(scene, s),
+                                          index,
+                                          fit,
+                                          options.samples_per_segment,
+                                          list_components);
         }
       },
       tbb::simple_partitioner{});
   ctx.ThrowIfCancelled(kSurfaceQualityStage);
+}
 
+/// The figures of the surface from its segments' figures, summed in segment order.
+ComponentFigures Aggregate(const PolygonMesh& mesh,
+                           const Scene& scene,
+                           const MeshIndex& index,
+                           const std::vector<SegmentFigures>& per_segment,
+                           double epsilon,
+                           const SurfaceQualityOptions& options) {
   SurfaceQuality q;
   q.epsilon = epsilon;
-  q.fit_distance = fit;
+  q.fit_distance = options.fit_factor * epsilon;
   q.components.resize(index.num_components);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     ComponentQuality& c = q.components[index.face_component[f]];
@@ -235,7 +284,7 @@ ComponentFigures Analyse(const PolygonMesh& mesh,
     const SegmentFigures& f = per_segment[i];
     sight_all += f.sight_length;
     clear_all += f.clear_length;
-    if (!supported(s)) continue;
+    if (!IsSupported(scene, s)) continue;
     ++q.supported_segments;
     q.supported_length += scene.segments[s].Length();
     near += f.near_length;
@@ -270,6 +319,26 @@ ComponentFigures Analyse(const PolygonMesh& mesh,
   return {std::move(q), index.face_component};
 }
 
+ComponentFigures Analyse(const PolygonMesh& mesh,
+                         const Scene& scene,
+                         double epsilon,
+                         const SurfaceQualityOptions& options,
+                         const RunContext& ctx) {
+  ThrowIfMembershipsMismatch(scene);
+  const MeshIndex index = IndexMesh(mesh);
+  std::vector<SegmentFigures> per_segment(scene.NumSegments());
+  MeasureSegments(
+      scene,
+      index,
+      options,
+      options.fit_factor * epsilon,
+      false,
+      ctx,
+      [](std::size_t) { return true; },
+      per_segment);
+  return Aggregate(mesh, scene, index, per_segment, epsilon, options);
+}
+
 /// The figures as reported: components by decreasing |volume|, the counts over them, the planes
 /// on no face.
 SurfaceQuality Summarise(SurfaceQuality q,
@@ -299,38 +368,93 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
   return Summarise(Analyse(mesh, scene, epsilon, options, ctx).quality, mesh, scene, epsilon);
 }
 
+/// The figures of `kept`, the surface `index` measured into `per_segment` without the faces of
+/// the components `removed` marks. A segment none of whose near samples' nearest faces and sight
+/// rays' faces lies in a removed component keeps its figures (its nearest face and the faces
+/// its rays meet are all kept); the others are measured again on `kept`.
+SurfaceQuality MeasureWithout(const PolygonMesh& kept,
+                              const Scene& scene,
+                              const MeshIndex& index,
+                              const std::vector<bool>& removed,
+                              std::vector<SegmentFigures> per_segment,
+                              double epsilon,
+                              const SurfaceQualityOptions& options,
+                              const RunContext& ctx) {
+  const MeshIndex kept_index = IndexMesh(kept);
+  // Components keep their faces: the old id of a kept face's component gives its new one.
+  std::vector<std::uint32_t> new_component(index.num_components, kNoComponent);
+  for (std::size_t f = 0, k = 0; f < index.face_component.size(); ++f) {
+    const std::uint32_t c = index.face_component[f];
+    if (!removed[c]) new_component[c] = kept_index.face_component[k++];
+  }
+  const auto touches_removed = [&](std::size_t i) {
+    return std::any_of(per_segment[i].components.begin(),
+                       per_segment[i].components.end(),
+                       [&](std::uint32_t c) { return removed[c]; });
+  };
+  std::vector<char> again(per_segment.size());
+  for (std::size_t i = 0; i < per_segment.size(); ++i) {
+    again[i] = touches_removed(i) ? 1 : 0;
+    if (again[i] != 0) continue;
+    for (auto& [c, length] : per_segment[i].near_by_component) c = new_component[c];
+  }
+  MeasureSegments(
+      scene,
+      kept_index,
+      options,
+      options.fit_factor * epsilon,
+      false,
+      ctx,
+      [&](std::size_t i) { return again[i] != 0; },
+      per_segment);
+  return Summarise(Aggregate(kept, scene, kept_index, per_segment, epsilon, options).quality,
+                   kept,
+                   scene,
+                   epsilon);
+}
+
 FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
                                 const Scene& scene,
                                 double epsilon,
                                 const SurfaceQualityOptions& options,
                                 const RunContext& ctx) {
-  const ComponentFigures figures = Analyse(mesh, scene, epsilon, options, ctx);
+  ThrowIfMembershipsMismatch(scene);
+  const MeshIndex index = IndexMesh(mesh);
+  std::vector<SegmentFigures> per_segment(scene.NumSegments());
+  MeasureSegments(
+      scene,
+      index,
+      options,
+      options.fit_factor * epsilon,
+      true,
+      ctx,
+      [](std::size_t) { return true; },
+      per_segment);
+  const ComponentFigures figures = Aggregate(mesh, scene, index, per_segment, epsilon, options);
   const std::vector<ComponentQuality>& components = figures.quality.components;
   // Solid pieces only (positive volume: full cells inside): dropping the inner shell of a void
-  // would fill the void.
-  const auto removed = [&](std::uint32_t c) {
-    return components[c].floating && components[c].volume > 0.0;
-  };
+  // would fill the void. A surface of fragments only is left whole: what holds the most is not
+  // known to be noise.
+  const bool all_floating = std::all_of(
+      components.begin(), components.end(), [](const ComponentQuality& c) { return c.floating; });
+  std::vector<bool> removed(components.size());
   FragmentRemoval out;
-  out.quality = Summarise(figures.quality, mesh, scene, epsilon);
-  // A surface of fragments only is left whole: what holds the most is not known to be noise.
-  if (std::all_of(components.begin(), components.end(), [](const ComponentQuality& c) {
-        return c.floating;
-      })) {
-    out.mesh = mesh;
-    return out;
-  }
   for (std::uint32_t c = 0; c < components.size(); ++c) {
-    if (!removed(c)) continue;
+    removed[c] = !all_floating && components[c].floating && components[c].volume > 0.0;
+    if (!removed[c]) continue;
     ++out.removed_components;
     out.removed_volume += components[c].volume;
     out.removed_supported_segments += components[c].supported_segments;
   }
-  // The kept faces and the vertices they use, each in their order: the mesh is unchanged when
-  // nothing is removed.
+  if (out.removed_components == 0) {
+    out.mesh = mesh;
+    out.quality = Summarise(figures.quality, mesh, scene, epsilon);
+    return out;
+  }
+  // The kept faces and the vertices they use, each in their order.
   std::vector<std::uint32_t> new_index(mesh.vertices.size(), kNoVertex);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (removed(figures.face_component[f])) continue;
+    if (removed[figures.face_component[f]]) continue;
     for (std::uint32_t v : mesh.Face(f)) new_index[v] = 0;
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -340,11 +464,13 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
   }
   std::vector<std::uint32_t> face;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (removed(figures.face_component[f])) continue;
+    if (removed[figures.face_component[f]]) continue;
     face.clear();
     for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
     out.mesh.AddFace(face);
   }
+  out.quality = MeasureWithout(
+      out.mesh, scene, index, removed, std::move(per_segment), epsilon, options, ctx);
   return out;
 }
 

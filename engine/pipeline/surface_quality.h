@@ -57,8 +57,10 @@ struct FragmentRemoval {
   std::size_t removed_components = 0;
   double removed_volume = 0.0;  ///< sum of the removed components' volumes (each > 0)
   std::size_t removed_supported_segments = 0;
-  /// MeasureSurfaceQuality of the input mesh (measured on the way): the figures of `mesh` too
-  /// when nothing was removed.
+  /// MeasureSurfaceQuality of `mesh` (the surface returned). When something was removed, only
+  /// the segments whose near samples or sight rays met a removed face are measured again; the
+  /// others keep the figures of the input surface, which are the kept surface's (up to which of
+  /// faces exactly as near a sample is named nearest).
   SurfaceQuality quality;
 };
 

@@ -87,6 +87,18 @@ TEST(SurfaceQuality, PerfectReconstructionScoresFull) {
   EXPECT_TRUE(q.planes_off_surface.empty());
 }
 
+TEST(SurfaceQuality, PlanesOffSurfaceAreThoseNoFaceLiesOn) {
+  Scene scene = CubeScene();
+  // Within eps of the +x face: on it. Through the cube, crossing four faces: off. Half an eps
+  // past the slab of the -z face, tilted: off.
+  scene.planes.push_back(Plane3{Vec3(1.0 + 0.5 * kEps, 0, 0), Vec3::UnitX()});
+  scene.planes.push_back(Plane3{Vec3(0.5, 0, 0), Vec3::UnitX()});
+  scene.planes.push_back(Plane3{Vec3(0, 0, -1.0 - 1.5 * kEps), Vec3(0.001, 0, 1).normalized()});
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  EXPECT_EQ(Measure(mesh, scene).planes_off_surface, (std::vector<std::uint32_t>{7, 8}));
+}
+
 TEST(SurfaceQuality, ShrunkBoxLosesDataFit) {
   // Every face 5 cm inside: farther than 2 eps from every segment.
   PolygonMesh mesh;
@@ -199,13 +211,56 @@ TEST(RemoveFloatingFragments, DropsTheFragmentsAndKeepsTheRestAsItWas) {
   const SurfaceQuality q = Measure(r.mesh, scene);
   EXPECT_EQ(q.floating_fragments, 0u);
   EXPECT_EQ(q.components.size(), 1u);
-  // The figures of the input mesh, measured on the way, are MeasureSurfaceQuality's.
+}
+
+void ExpectSameFigures(const SurfaceQuality& a, const SurfaceQuality& b) {
+  EXPECT_EQ(a.data_fit, b.data_fit);
+  EXPECT_EQ(a.visibility_consistency, b.visibility_consistency);
+  EXPECT_EQ(a.visibility_consistency_all, b.visibility_consistency_all);
+  EXPECT_EQ(a.supported_segments, b.supported_segments);
+  EXPECT_EQ(a.floating_fragments, b.floating_fragments);
+  EXPECT_EQ(a.enclosed_volume, b.enclosed_volume);
+  EXPECT_EQ(a.largest_component_share, b.largest_component_share);
+  EXPECT_EQ(a.planes_off_surface, b.planes_off_surface);
+  ASSERT_EQ(a.components.size(), b.components.size());
+  for (std::size_t c = 0; c < a.components.size(); ++c) {
+    EXPECT_EQ(a.components[c].faces, b.components[c].faces) << c;
+    EXPECT_EQ(a.components[c].volume, b.components[c].volume) << c;
+    EXPECT_EQ(a.components[c].supported_length, b.components[c].supported_length) << c;
+    EXPECT_EQ(a.components[c].supported_segments, b.components[c].supported_segments) << c;
+    EXPECT_EQ(a.components[c].supported_lines, b.components[c].supported_lines) << c;
+    EXPECT_EQ(a.components[c].floating, b.components[c].floating) << c;
+  }
+}
+
+TEST(RemoveFloatingFragments, ItsFiguresAreThoseOfTheKeptSurface) {
+  // Two cubes apart (both holding lines), a fragment in front of the +x face hiding its middle
+  // line from its viewpoint, and one far off hiding nothing: the kept surface's figures, where
+  // only the hidden line's segment is measured again, are a fresh measure's.
+  Scene scene = CubeScene();
+  const Scene right = CubeScene();
+  const Vec3 shift(0, 10, 0);
+  for (std::size_t i = 0; i < right.NumSegments(); ++i) {
+    const SegmentId s(i);
+    scene.segments.push_back(Segment3{right.segments[s].p1 + shift, right.segments[s].p2 + shift});
+    scene.viewpoints.push_back(right.viewpoints[right.observations[s][0]] + shift);
+    const std::array<ViewpointId, 1> row{ViewpointId(scene.viewpoints.size() - 1)};
+    scene.observations.AddRow(row);
+    scene.memberships.push_back(right.memberships[s]);
+  }
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(-1, -1, -1), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(3, -0.5, -0.5), Vec3(3.5, 0.5, 0.5));
+  AddBox(mesh, Vec3(-1, 9, -1), Vec3(1, 11, 1));
+  AddBox(mesh, Vec3(30, 30, 30), Vec3(31, 31, 31));
   const SurfaceQuality before = Measure(mesh, scene);
-  EXPECT_EQ(r.quality.components.size(), before.components.size());
-  EXPECT_EQ(r.quality.floating_fragments, before.floating_fragments);
-  EXPECT_EQ(r.quality.data_fit, before.data_fit);
-  EXPECT_EQ(r.quality.visibility_consistency, before.visibility_consistency);
-  EXPECT_EQ(r.quality.largest_component_share, before.largest_component_share);
+  EXPECT_LT(before.visibility_consistency, 1.0);
+  const FragmentRemoval r = Remove(mesh, scene);
+  EXPECT_EQ(r.removed_components, 2u);
+  ASSERT_EQ(r.mesh.NumFaces(), 12u);
+  const SurfaceQuality after = Measure(r.mesh, scene);
+  EXPECT_NEAR(after.visibility_consistency, 1.0, 1e-12);
+  ExpectSameFigures(r.quality, after);
 }
 
 TEST(RemoveFloatingFragments, KeepsTheInnerShellOfAVoid) {
@@ -230,6 +285,7 @@ TEST(RemoveFloatingFragments, KeepsTheInnerShellOfAVoid) {
   const FragmentRemoval r = Remove(mesh, scene);
   EXPECT_EQ(r.removed_components, 0u);
   EXPECT_EQ(r.mesh.face_indices, mesh.face_indices);
+  ExpectSameFigures(r.quality, q);
 }
 
 TEST(RemoveFloatingFragments, LeavesAMeshWithoutFragmentsAndAMeshOfFragmentsOnly) {
