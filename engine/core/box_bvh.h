@@ -1,8 +1,9 @@
 #pragma once
-// A bounding volume hierarchy over axis-aligned boxes, queried by rays and by plane slabs: which
-// boxes may a ray or a slab meet, in O(log n + answers) instead of n box tests (the scene-mode
-// decision casts 14 rays per viewpoint against every plane's outline, the surface quality asks
-// every plane whether some face lies on it: both quadratic in the scene without it).
+// A bounding volume hierarchy over axis-aligned boxes, queried by rays, plane slabs and boxes:
+// which boxes may a ray, a slab or a box meet, in O(log n + answers) instead of n box tests (the
+// scene-mode decision casts 14 rays per viewpoint against every plane's outline, the surface
+// quality asks every plane whether some face lies on it, plane fusion pairs the planes whose
+// boxes come near: all quadratic in the scene without it).
 
 #include "engine/core/geometry.h"
 
@@ -36,6 +37,18 @@ class BoxBvh {
         fn);
   }
 
+  /// Calls fn(i) for every box i that overlaps `box` (boundaries included), in an order fixed by
+  /// the boxes and `box`, until fn returns true. Returns whether some fn(i) returned true.
+  template <typename Fn>
+  bool AnyOverlapping(const Box3& box, Fn&& fn) const {
+    return AnyMeeting(
+        [&](const Box3& b) {
+          return (box.min.array() <= b.max.array()).all() &&
+                 (b.min.array() <= box.max.array()).all();
+        },
+        fn);
+  }
+
   /// Whether the ray {origin + t direction, t >= 0} meets `box` (boundary included).
   [[nodiscard]] static bool RayMeetsBox(const Vec3& origin, const Vec3& direction, const Box3& box);
 
@@ -48,7 +61,7 @@ class BoxBvh {
     std::uint32_t count = 0;
   };
 
-  /// The traversal of both queries: `meets` must hold for a node's box whenever it holds for a
+  /// The traversal of the queries: `meets` must hold for a node's box whenever it holds for a
   /// box inside it.
   template <typename Meets, typename Fn>
   bool AnyMeeting(Meets&& meets, Fn&& fn) const {

@@ -89,6 +89,46 @@ TEST(BoxBvh, ReportsExactlyTheBoxesASlabMeets) {
   EXPECT_GT(total, 1000u);  // the slabs do meet boxes
 }
 
+TEST(BoxBvh, ReportsExactlyTheBoxesABoxOverlaps) {
+  Rng rng(7);
+  std::vector<Box3> boxes;
+  for (int i = 0; i < 500; ++i) {
+    Box3 b;
+    const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
+    b.Extend(c);
+    b.Extend(c + Vec3(rng.Uniform(0, 2), i % 4 == 0 ? 0.0 : rng.Uniform(0, 2), rng.Uniform(0, 2)));
+    boxes.push_back(i % 50 == 3 ? Box3{} : b);
+  }
+  const BoxBvh bvh(boxes);
+  std::size_t total = 0;
+  for (int k = 0; k < 100; ++k) {
+    // Query boxes of every size, some touching others exactly on a face (a box of the set).
+    Box3 query = boxes[static_cast<std::size_t>(k) * 5];
+    if (k % 2 == 1) {
+      const Vec3 c(rng.Uniform(-12, 12), rng.Uniform(-12, 12), rng.Uniform(-12, 12));
+      query = Box3{};
+      query.Extend(c);
+      query.Extend(c + Vec3(rng.Uniform(0, 4), rng.Uniform(0, 4), rng.Uniform(0, 4)));
+    }
+    std::set<std::uint32_t> expected;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+      const Box3& b = boxes[i];
+      if (!b.IsEmpty() && !query.IsEmpty() && (query.min.array() <= b.max.array()).all() &&
+          (b.min.array() <= query.max.array()).all()) {
+        expected.insert(i);
+      }
+    }
+    std::set<std::uint32_t> met;
+    EXPECT_FALSE(bvh.AnyOverlapping(query, [&](std::uint32_t i) {
+      EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
+      return false;
+    }));
+    EXPECT_EQ(met, expected);
+    total += expected.size();
+  }
+  EXPECT_GT(total, 100u);  // the boxes do overlap
+}
+
 TEST(BoxBvh, RayMeetsBoxOnlyAheadAndOnItsBoundary) {
   Box3 b;
   b.Extend(Vec3(1, 0, 0));

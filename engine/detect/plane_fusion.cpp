@@ -1,5 +1,6 @@
 #include "engine/detect/plane_fusion.h"
 
+#include "engine/core/box_bvh.h"
 #include "engine/detect/segment_bvh.h"
 #include "engine/detect/segment_geometry.h"
 
@@ -82,6 +83,12 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
 double SlabTolerance(const Box3& box, const Plane3& plane, double tolerance) {
   return tolerance +
          1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + plane.point.norm());
+}
+
+/// `max_gap` plus a slack for rounding, relative to the size and place of `box`: a box within
+/// max_gap of `box` by BoxGap overlaps `box` grown by this on every side.
+double GapTolerance(const Box3& box, double max_gap) {
+  return max_gap + 1e-9 * (max_gap + box.Extent().norm() + box.Center().norm());
 }
 
 /// Whether some point of the inliers' box lies within `tolerance` of `plane` (with the slack).
@@ -167,13 +174,32 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
     auto piece = std::make_shared<SupportPiece>(planes[i].inliers);
     nodes.push_back({std::move(planes[i]), box, i, true, {std::move(piece)}});
   }
-  // Pending pairs ordered by (angle, i, j): a total order, so the greedy pass is deterministic.
+  // Pending pairs ordered by (angle, i, j): a total order, so the greedy pass is deterministic
+  // whatever order the pairs are found in.
   std::set<std::tuple<double, std::size_t, std::size_t>> queue;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    for (std::size_t j = i + 1; j < nodes.size(); ++j) {
+  // The input planes whose boxes come within max_gap of a box: the only partners PairAngle can
+  // accept among them, found without pairing every plane with every other.
+  const std::size_t inputs = nodes.size();
+  std::vector<Box3> input_boxes;
+  input_boxes.reserve(inputs);
+  for (const FusionNode& node : nodes) input_boxes.push_back(node.box);
+  const BoxBvh near_inputs(input_boxes);
+  const auto for_each_input_near = [&](const Box3& box, auto&& fn) {
+    Box3 reach = box;
+    const double gap = GapTolerance(box, params.max_gap);
+    reach.min.array() -= gap;
+    reach.max.array() += gap;
+    near_inputs.AnyOverlapping(reach, [&](std::uint32_t k) {
+      fn(static_cast<std::size_t>(k));
+      return false;
+    });
+  };
+  for (std::size_t i = 0; i < inputs; ++i) {
+    for_each_input_near(nodes[i].box, [&](std::size_t j) {
+      if (j <= i) return;
       const double angle = PairAngle(segments, params, nodes[i], nodes[j]);
       if (angle >= 0.0) queue.emplace(angle, i, j);
-    }
+    });
   }
   int merges = 0;
   while (!queue.empty()) {
@@ -199,11 +225,13 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
     nodes.push_back({SupportedPlane{plane, std::move(merged)}, box, key, true, std::move(pieces)});
     ++merges;
     const std::size_t fresh = nodes.size() - 1;
-    for (std::size_t k = 0; k < fresh; ++k) {
-      if (!nodes[k].alive) continue;
+    const auto pair_with_fresh = [&](std::size_t k) {
+      if (!nodes[k].alive) return;
       const double a = PairAngle(segments, params, nodes[k], nodes[fresh]);
       if (a >= 0.0) queue.emplace(a, k, fresh);
-    }
+    };
+    for_each_input_near(nodes[fresh].box, pair_with_fresh);
+    for (std::size_t k = inputs; k < fresh; ++k) pair_with_fresh(k);  // merged planes
   }
   std::vector<FusionNode*> alive;
   for (FusionNode& node : nodes) {
