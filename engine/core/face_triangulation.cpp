@@ -1,5 +1,7 @@
 #include "engine/core/face_triangulation.h"
 
+#include "engine/core/vector_area.h"
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -9,17 +11,6 @@ namespace linesurf {
 namespace {
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
-
-/// Twice the polygon's vector area: its normal, counter-clockwise, for non-convex faces too.
-/// Taken about the first corner, so faces far from the origin lose no precision.
-Vec3 AreaNormal(std::span<const Vec3> vertices, std::span<const std::uint32_t> face) {
-  Vec3 n = Vec3::Zero();
-  const Vec3& o = vertices[face[0]];
-  for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-    n += (vertices[face[k]] - o).cross(vertices[face[k + 1]] - o);
-  }
-  return n;
-}
 
 /// Turn of the corner a-b-c about `normal`: > 0 convex, < 0 reflex, 0 straight. Turns smaller
 /// than a relative 1e-9 of the two edges count as straight, so rounding does not make a straight
@@ -47,7 +38,7 @@ void Fan(std::span<const std::uint32_t> ring, Triangles& out) {
 Triangles FaceTriangles(std::span<const Vec3> vertices, std::span<const std::uint32_t> face) {
   Triangles out;
   if (face.size() < 3) return out;
-  const Vec3 normal = AreaNormal(vertices, face);
+  const Vec3 normal = TwiceVectorArea(vertices, face);
   const std::size_t n = face.size();
   const auto turn_at = [&](std::span<const std::uint32_t> ring, std::size_t k) {
     const std::size_t m = ring.size();

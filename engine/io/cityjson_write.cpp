@@ -2,6 +2,7 @@
 
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
+#include "engine/core/vector_area.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/number_text.h"
@@ -45,11 +46,7 @@ const char* SurfaceTypeName(SurfaceType type) {
 
 /// Newell's normal of a polygon (unit length; zero for a degenerate face).
 Vec3 FaceNormal(const PolygonMesh& mesh, std::span<const std::uint32_t> face) {
-  Vec3 n = Vec3::Zero();
-  const Vec3& origin = mesh.vertices[face[0]];
-  for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-    n += (mesh.vertices[face[i]] - origin).cross(mesh.vertices[face[i + 1]] - origin);
-  }
+  const Vec3 n = TwiceVectorArea(mesh.vertices, face);
   const double length = n.norm();
   return length > 0.0 ? Vec3(n / length) : Vec3(Vec3::Zero());
 }

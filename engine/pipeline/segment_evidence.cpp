@@ -2,6 +2,7 @@
 
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
+#include "engine/core/vector_area.h"
 
 #include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
@@ -512,13 +513,7 @@ void AddIntegratedTerms(const EvidenceSpace& space,
   }
 }
 
-double PolygonArea(std::span<const Vec3> points) {
-  Vec3 sum = Vec3::Zero();
-  for (std::size_t k = 1; k + 1 < points.size(); ++k) {
-    sum += (points[k] - points[0]).cross(points[k + 1] - points[0]);
-  }
-  return 0.5 * sum.norm();
-}
+double PolygonArea(std::span<const Vec3> points) { return 0.5 * TwiceVectorArea(points).norm(); }
 
 double FacetArea(const CellComplex& cx, FacetId f) {
   std::vector<Vec3> points;

@@ -110,7 +110,7 @@ void AddIntegratedTerms(const EvidenceSpace& space,
                         double sigma,
                         solver::EnergyInput& energy);
 
-/// The area of a planar convex polygon (a fan of triangles from its first point).
+/// The area of a planar polygon: half the length of its vector area (engine/core/vector_area.h).
 [[nodiscard]] double PolygonArea(std::span<const Vec3> points);
 /// The area of a facet of `complex` (from its rounded vertices).
 [[nodiscard]] double FacetArea(const CellComplex& complex, FacetId f);
