@@ -10,26 +10,36 @@
 namespace linesurf {
 namespace {
 
-std::set<std::uint32_t> AllAlong(const BoxBvh& bvh, const Vec3& o, const Vec3& d) {
-  std::set<std::uint32_t> met;
-  bvh.AnyAlongRay(o, d, [&](std::uint32_t i) {
-    EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
-    return false;
-  });
-  return met;
-}
-
-TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
-  Rng rng(3);
+/// 500 boxes of sides up to `side` in [-10, 10]^3: every third flat (a plane's outline), every
+/// 50th empty.
+std::vector<Box3> RandomBoxes(Rng& rng, double side) {
   std::vector<Box3> boxes;
   for (int i = 0; i < 500; ++i) {
     Box3 b;
     const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
     b.Extend(c);
-    // Some flat boxes (a plane's outline), some empty ones.
-    b.Extend(c + Vec3(rng.Uniform(0, 3), i % 3 == 0 ? 0.0 : rng.Uniform(0, 3), rng.Uniform(0, 3)));
+    b.Extend(c + Vec3(rng.Uniform(0, side),
+                      i % 3 == 0 ? 0.0 : rng.Uniform(0, side),
+                      rng.Uniform(0, side)));
     boxes.push_back(i % 50 == 7 ? Box3{} : b);
   }
+  return boxes;
+}
+
+/// The boxes a query reports (query(fn) calls fn per box), each checked to come once.
+template <typename Query>
+std::set<std::uint32_t> Reported(Query&& query) {
+  std::set<std::uint32_t> met;
+  EXPECT_FALSE(query([&](std::uint32_t i) {
+    EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
+    return false;
+  }));
+  return met;
+}
+
+TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
+  Rng rng(3);
+  const std::vector<Box3> boxes = RandomBoxes(rng, 3.0);
   const BoxBvh bvh(boxes);
   // The 6 axis directions (zero components) and random ones.
   std::vector<Vec3> dirs = {
@@ -45,7 +55,7 @@ TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
       for (std::uint32_t i = 0; i < boxes.size(); ++i) {
         if (!boxes[i].IsEmpty() && BoxBvh::RayMeetsBox(o, d, boxes[i])) expected.insert(i);
       }
-      EXPECT_EQ(AllAlong(bvh, o, d), expected);
+      EXPECT_EQ(Reported([&](auto&& fn) { return bvh.AnyAlongRay(o, d, fn); }), expected);
       total += expected.size();
     }
   }
@@ -54,14 +64,7 @@ TEST(BoxBvh, ReportsExactlyTheBoxesARayMeets) {
 
 TEST(BoxBvh, ReportsExactlyTheBoxesASlabMeets) {
   Rng rng(5);
-  std::vector<Box3> boxes;
-  for (int i = 0; i < 500; ++i) {
-    Box3 b;
-    const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
-    b.Extend(c);
-    b.Extend(c + Vec3(rng.Uniform(0, 2), i % 4 == 0 ? 0.0 : rng.Uniform(0, 2), rng.Uniform(0, 2)));
-    boxes.push_back(i % 50 == 3 ? Box3{} : b);
-  }
+  const std::vector<Box3> boxes = RandomBoxes(rng, 2.0);
   const BoxBvh bvh(boxes);
   std::size_t total = 0;
   for (int k = 0; k < 60; ++k) {
@@ -77,12 +80,8 @@ TEST(BoxBvh, ReportsExactlyTheBoxesASlabMeets) {
         expected.insert(i);
       }
     }
-    std::set<std::uint32_t> met;
-    EXPECT_FALSE(bvh.AnyInSlab(plane, half_thickness, [&](std::uint32_t i) {
-      EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
-      return false;
-    }));
-    EXPECT_EQ(met, expected);
+    EXPECT_EQ(Reported([&](auto&& fn) { return bvh.AnyInSlab(plane, half_thickness, fn); }),
+              expected);
     EXPECT_LT(expected.size(), boxes.size());  // the slab leaves boxes out
     total += expected.size();
   }
@@ -91,14 +90,7 @@ TEST(BoxBvh, ReportsExactlyTheBoxesASlabMeets) {
 
 TEST(BoxBvh, ReportsExactlyTheBoxesABoxOverlaps) {
   Rng rng(7);
-  std::vector<Box3> boxes;
-  for (int i = 0; i < 500; ++i) {
-    Box3 b;
-    const Vec3 c(rng.Uniform(-10, 10), rng.Uniform(-10, 10), rng.Uniform(-10, 10));
-    b.Extend(c);
-    b.Extend(c + Vec3(rng.Uniform(0, 2), i % 4 == 0 ? 0.0 : rng.Uniform(0, 2), rng.Uniform(0, 2)));
-    boxes.push_back(i % 50 == 3 ? Box3{} : b);
-  }
+  const std::vector<Box3> boxes = RandomBoxes(rng, 2.0);
   const BoxBvh bvh(boxes);
   std::size_t total = 0;
   for (int k = 0; k < 100; ++k) {
@@ -118,12 +110,7 @@ TEST(BoxBvh, ReportsExactlyTheBoxesABoxOverlaps) {
         expected.insert(i);
       }
     }
-    std::set<std::uint32_t> met;
-    EXPECT_FALSE(bvh.AnyOverlapping(query, [&](std::uint32_t i) {
-      EXPECT_TRUE(met.insert(i).second) << "box " << i << " reported twice";
-      return false;
-    }));
-    EXPECT_EQ(met, expected);
+    EXPECT_EQ(Reported([&](auto&& fn) { return bvh.AnyOverlapping(query, fn); }), expected);
     total += expected.size();
   }
   EXPECT_GT(total, 100u);  // the boxes do overlap

@@ -319,24 +319,33 @@ ComponentFigures Aggregate(const PolygonMesh& mesh,
   return {std::move(q), index.face_component};
 }
 
-ComponentFigures Analyse(const PolygonMesh& mesh,
-                         const Scene& scene,
-                         double epsilon,
-                         const SurfaceQualityOptions& options,
-                         const RunContext& ctx) {
+/// A surface measured: its index, every segment's figures and the surface's.
+struct Analysis {
+  MeshIndex index;
+  std::vector<SegmentFigures> per_segment;
+  ComponentFigures figures;
+};
+
+/// `list_components`: each segment's figures list the components they depend on.
+Analysis Analyse(const PolygonMesh& mesh,
+                 const Scene& scene,
+                 double epsilon,
+                 const SurfaceQualityOptions& options,
+                 bool list_components,
+                 const RunContext& ctx) {
   ThrowIfMembershipsMismatch(scene);
-  const MeshIndex index = IndexMesh(mesh);
-  std::vector<SegmentFigures> per_segment(scene.NumSegments());
+  Analysis out{IndexMesh(mesh), std::vector<SegmentFigures>(scene.NumSegments()), {}};
   MeasureSegments(
       scene,
-      index,
+      out.index,
       options,
       options.fit_factor * epsilon,
-      false,
+      list_components,
       ctx,
       [](std::size_t) { return true; },
-      per_segment);
-  return Aggregate(mesh, scene, index, per_segment, epsilon, options);
+      out.per_segment);
+  out.figures = Aggregate(mesh, scene, out.index, out.per_segment, epsilon, options);
+  return out;
 }
 
 /// The figures as reported: components by decreasing |volume|, the counts over them, the planes
@@ -365,7 +374,8 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
                        double epsilon,
                        const SurfaceQualityOptions& options,
                        const RunContext& ctx) {
-  return Summarise(Analyse(mesh, scene, epsilon, options, ctx).quality, mesh, scene, epsilon);
+  return Summarise(
+      Analyse(mesh, scene, epsilon, options, false, ctx).figures.quality, mesh, scene, epsilon);
 }
 
 /// The figures of `kept`, the surface `index` measured into `per_segment` without the faces of
@@ -418,19 +428,8 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
                                 double epsilon,
                                 const SurfaceQualityOptions& options,
                                 const RunContext& ctx) {
-  ThrowIfMembershipsMismatch(scene);
-  const MeshIndex index = IndexMesh(mesh);
-  std::vector<SegmentFigures> per_segment(scene.NumSegments());
-  MeasureSegments(
-      scene,
-      index,
-      options,
-      options.fit_factor * epsilon,
-      true,
-      ctx,
-      [](std::size_t) { return true; },
-      per_segment);
-  const ComponentFigures figures = Aggregate(mesh, scene, index, per_segment, epsilon, options);
+  Analysis analysis = Analyse(mesh, scene, epsilon, options, true, ctx);
+  const ComponentFigures& figures = analysis.figures;
   const std::vector<ComponentQuality>& components = figures.quality.components;
   // Solid pieces only (positive volume: full cells inside): dropping the inner shell of a void
   // would fill the void. A surface of fragments only is left whole: what holds the most is not
@@ -469,8 +468,14 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
     for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
     out.mesh.AddFace(face);
   }
-  out.quality = MeasureWithout(
-      out.mesh, scene, index, removed, std::move(per_segment), epsilon, options, ctx);
+  out.quality = MeasureWithout(out.mesh,
+                               scene,
+                               analysis.index,
+                               removed,
+                               std::move(analysis.per_segment),
+                               epsilon,
+                               options,
+                               ctx);
   return out;
 }
 
