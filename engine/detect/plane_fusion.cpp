@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
-#include <set>
+#include <queue>
 #include <span>
 #include <tuple>
+#include <unordered_set>
 
 namespace linesurf::detect {
 namespace {
@@ -26,19 +28,21 @@ class SupportPiece {
  public:
   explicit SupportPiece(std::vector<SegmentId> inliers) : inliers_(std::move(inliers)) {}
 
-  /// Appends to `hits` every inlier whose box meets the slab |n.(x - o)| <= half_thickness.
-  void CollectInSlab(std::span<const Segment3> segments,
-                     const Plane3& plane,
-                     double half_thickness,
-                     std::vector<SegmentId>& hits) {
+  /// Calls fn(s) for the inliers s that can lie in the slab |n.(x - o)| <= half_thickness (among
+  /// others: SegmentBvh::ForEachInSlab) until it returns true; returns whether it did.
+  template <typename Fn>
+  bool AnyInSlab(std::span<const Segment3> segments,
+                 const Plane3& plane,
+                 double half_thickness,
+                 Fn&& fn) {
     if (!bvh_) {
       std::vector<Segment3> own;
       own.reserve(inliers_.size());
       for (const SegmentId s : inliers_) own.push_back(segments[s.index()]);
       bvh_ = std::make_unique<SegmentBvh>(own);
     }
-    bvh_->ForEachInSlab(
-        plane, half_thickness, [&](SegmentId local) { hits.push_back(inliers_[local.index()]); });
+    return bvh_->AnyInSlab(
+        plane, half_thickness, [&](SegmentId local) { return fn(inliers_[local.index()]); });
   }
 
  private:
@@ -48,7 +52,7 @@ class SupportPiece {
 
 struct FusionNode {
   SupportedPlane data;
-  Box3 box;  ///< of the inliers' endpoints
+  Box3 box;             ///< of the inliers' endpoints
   std::size_t key = 0;  ///< output position: the smallest input index among its parents
   bool alive = true;
   std::vector<std::shared_ptr<SupportPiece>> pieces;  ///< their union is data.inliers
@@ -128,26 +132,29 @@ bool SharesEnough(std::span<const Segment3> segments,
     }
   }
   if (!BoxMeetsSlab(large.box, small.data.plane, params.epsilon)) return false;
-  std::span<const SegmentId> candidates = large.data.inliers;
-  std::vector<SegmentId> hits;
-  if (candidates.size() > kIndexedSupport) {
-    const double half_thickness = SlabTolerance(large.box, small.data.plane, params.epsilon);
-    for (const auto& piece : large.pieces) {
-      piece->CollectInSlab(segments, small.data.plane, half_thickness, hits);
-    }
-    std::sort(hits.begin(), hits.end());  // pieces may share segments: each counts once
-    hits.erase(std::unique(hits.begin(), hits.end()), hits.end());
-    candidates = hits;
-  }
-  for (const SegmentId s : candidates) {
-    // A segment of both supports was counted with the smaller one.
+  // Whether a segment of the larger support reaches the goal; a segment of both supports was
+  // counted with the smaller one.
+  const auto counts_to_goal = [&](SegmentId s) {
     if (small_counts &&
         std::binary_search(small.data.inliers.begin(), small.data.inliers.end(), s)) {
-      continue;
+      return false;
     }
-    if (near_both(s) && ++shared >= goal) return true;
+    return near_both(s) && ++shared >= goal;
+  };
+  if (large.data.inliers.size() <= kIndexedSupport) {
+    return std::any_of(large.data.inliers.begin(), large.data.inliers.end(), counts_to_goal);
   }
-  return false;
+  // The pieces may share segments: each counts once, whichever piece meets it first (the count
+  // of distinct segments near both planes does not depend on the order).
+  const double half_thickness = SlabTolerance(large.box, small.data.plane, params.epsilon);
+  std::unordered_set<std::uint32_t> met;
+  const bool several = large.pieces.size() > 1;
+  return std::any_of(large.pieces.begin(), large.pieces.end(), [&](const auto& piece) {
+    return piece->AnyInSlab(segments, small.data.plane, half_thickness, [&](SegmentId s) {
+      if (several && !met.insert(s.index()).second) return false;
+      return counts_to_goal(s);
+    });
+  });
 }
 
 /// Angle of a mergeable pair, or a negative value when the pair does not qualify.
@@ -165,7 +172,8 @@ double PairAngle(std::span<const Segment3> segments,
 
 }  // namespace
 
-int FusePlanes(std::span<const Segment3> segments, const FusionParameters& params,
+int FusePlanes(std::span<const Segment3> segments,
+               const FusionParameters& params,
                std::vector<SupportedPlane>& planes) {
   std::vector<FusionNode> nodes;
   nodes.reserve(2 * planes.size());
@@ -174,9 +182,11 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
     auto piece = std::make_shared<SupportPiece>(planes[i].inliers);
     nodes.push_back({std::move(planes[i]), box, i, true, {std::move(piece)}});
   }
-  // Pending pairs ordered by (angle, i, j): a total order, so the greedy pass is deterministic
-  // whatever order the pairs are found in.
-  std::set<std::tuple<double, std::size_t, std::size_t>> queue;
+  // Pending pairs, smallest (angle, i, j) first: a total order, and no pair is pushed twice (a
+  // fresh node's pairs are new), so the greedy pass is deterministic whatever order the pairs are
+  // found in.
+  using Pair = std::tuple<double, std::size_t, std::size_t>;
+  std::priority_queue<Pair, std::vector<Pair>, std::greater<>> queue;
   // The input planes whose boxes come within max_gap of a box: the only partners PairAngle can
   // accept among them, found without pairing every plane with every other.
   const std::size_t inputs = nodes.size();
@@ -203,8 +213,8 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
   }
   int merges = 0;
   while (!queue.empty()) {
-    const auto [angle, i, j] = *queue.begin();
-    queue.erase(queue.begin());
+    const auto [angle, i, j] = queue.top();
+    queue.pop();
     if (!nodes[i].alive || !nodes[j].alive) continue;
     std::vector<SegmentId> merged = UnionOf(nodes[i].data.inliers, nodes[j].data.inliers);
     const Plane3 plane = FitPlane(segments, merged, nodes[i].data.plane.normal);
@@ -237,14 +247,16 @@ int FusePlanes(std::span<const Segment3> segments, const FusionParameters& param
   for (FusionNode& node : nodes) {
     if (node.alive) alive.push_back(&node);
   }
-  std::sort(alive.begin(), alive.end(),
-            [](const FusionNode* a, const FusionNode* b) { return a->key < b->key; });
+  std::sort(alive.begin(), alive.end(), [](const FusionNode* a, const FusionNode* b) {
+    return a->key < b->key;
+  });
   planes.clear();
   for (FusionNode* node : alive) planes.push_back(std::move(node->data));
   return merges;
 }
 
-std::int64_t LimitMemberships(std::size_t num_segments, std::int32_t min_support,
+std::int64_t LimitMemberships(std::size_t num_segments,
+                              std::int32_t min_support,
                               std::vector<SupportedPlane>& planes) {
   std::vector<std::size_t> order(planes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -255,8 +267,8 @@ std::int64_t LimitMemberships(std::size_t num_segments, std::int32_t min_support
   std::int64_t removed = 0;
   for (const std::size_t p : order) {
     std::vector<SegmentId>& inliers = planes[p].inliers;
-    const auto kept = std::remove_if(inliers.begin(), inliers.end(),
-                                     [&](SegmentId s) { return count[s.index()] >= 2; });
+    const auto kept = std::remove_if(
+        inliers.begin(), inliers.end(), [&](SegmentId s) { return count[s.index()] >= 2; });
     removed += inliers.end() - kept;
     inliers.erase(kept, inliers.end());
     if (inliers.size() < static_cast<std::size_t>(min_support)) {

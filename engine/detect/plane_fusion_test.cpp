@@ -93,5 +93,45 @@ TEST(FusePlanes, ALargeSupportSharesTheSegmentsInTheOtherPlanesSlabWhereverTheyL
   EXPECT_EQ(FusePlanes(segments, params, planes), 0);
 }
 
+TEST(FusePlanes, ASegmentInSeveralPiecesOfAMergedPlaneCountsOnce) {
+  // The ground z = 0 over x in [0, 1000], found twice (two blocks' pieces with the same 1,001
+  // segments): the pieces merge first. B: 300 segments at z ~ 0.03 (farther than eps from the
+  // ground, within epsilon_fusion) on a plane of slope 0.001 that meets the ground at x = 500.
+  // They share the ground's ~40 segments within eps of both planes, each in both pieces of the
+  // merged ground: counted once, fewer than 0.2 x 300 = 60 (twice, 80 would merge them); more
+  // than 0.1 x 300 = 30.
+  std::vector<Segment3> segments;
+  for (int i = 0; i <= 1000; ++i) segments.push_back({Vec3(i, 0, 0), Vec3(i + 0.3, 1, 0)});
+  const auto on_b = [](double x, double y) { return Vec3(x, y, 0.001 * (x - 500.0)); };
+  for (int i = 0; i < 300; ++i) {
+    segments.push_back({on_b(530.0 + 0.01 * i, 0), on_b(530.0 + 0.01 * i + 0.3, 1)});
+  }
+  const auto planes = [] {
+    std::vector<SupportedPlane> out(3);
+    for (int k = 0; k < 2; ++k) {
+      out[k].plane.normal = Vec3::UnitZ();
+      for (int i = 0; i <= 1000; ++i) out[k].inliers.emplace_back(static_cast<std::uint32_t>(i));
+    }
+    out[2].plane = Plane3{Vec3(500, 0, 0), Vec3(-0.001, 0, 1).normalized()};
+    for (int i = 0; i < 300; ++i) out[2].inliers.emplace_back(static_cast<std::uint32_t>(1001 + i));
+    return out;
+  };
+  FusionParameters params;
+  params.epsilon = 0.02;
+  params.epsilon_fusion = 0.06;
+  params.max_angle_rad = 0.17;
+  params.min_shared_fraction = 0.2;
+  std::vector<SupportedPlane> refused = planes();
+  EXPECT_EQ(FusePlanes(segments, params, refused), 1);
+  ASSERT_EQ(refused.size(), 2u);
+  EXPECT_EQ(refused[0].inliers.size(), 1001u);
+  EXPECT_EQ(refused[1].inliers.size(), 300u);
+  params.min_shared_fraction = 0.1;
+  std::vector<SupportedPlane> merged = planes();
+  EXPECT_EQ(FusePlanes(segments, params, merged), 2);
+  ASSERT_EQ(merged.size(), 1u);
+  EXPECT_EQ(merged[0].inliers.size(), 1301u);
+}
+
 }  // namespace
 }  // namespace linesurf::detect

@@ -2,12 +2,12 @@
 // A bounding-volume hierarchy over segments for slab queries ("which segments can lie within t
 // of this plane") and a spatial order of the segments (its leaf order) for near-pair sampling.
 
+#include "engine/core/geometry.h"
+#include "engine/core/strong_id.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
-
-#include "engine/core/geometry.h"
-#include "engine/core/strong_id.h"
 
 namespace linesurf::detect {
 
@@ -19,7 +19,16 @@ class SegmentBvh {
   /// Calls `fn(SegmentId)` for every segment whose bounding box meets the slab
   /// |n.(x - o)| <= half_thickness, in leaf order.
   template <typename Fn>
-  void ForEachInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const;
+  void ForEachInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const {
+    AnyInSlab(plane, half_thickness, [&](SegmentId s) {
+      fn(s);
+      return false;
+    });
+  }
+
+  /// ForEachInSlab until `fn(SegmentId)` returns true; returns whether it did.
+  template <typename Fn>
+  bool AnyInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const;
 
   /// Segments in leaf order (nearby segments are mostly close in this order).
   [[nodiscard]] const std::vector<SegmentId>& Order() const { return order_; }
@@ -42,8 +51,8 @@ class SegmentBvh {
 };
 
 template <typename Fn>
-void SegmentBvh::ForEachInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const {
-  if (nodes_.empty()) return;
+bool SegmentBvh::AnyInSlab(const Plane3& plane, double half_thickness, Fn&& fn) const {
+  if (nodes_.empty()) return false;
   std::uint32_t stack[128];
   int top = 0;
   stack[top++] = 0;
@@ -51,12 +60,15 @@ void SegmentBvh::ForEachInSlab(const Plane3& plane, double half_thickness, Fn&& 
     const Node& node = nodes_[stack[--top]];
     if (!BoxMeetsSlab(node.center, node.half_extent, plane, half_thickness)) continue;
     if (node.leaf) {
-      for (std::uint32_t i = node.begin; i < node.end; ++i) fn(order_[i]);
+      for (std::uint32_t i = node.begin; i < node.end; ++i) {
+        if (fn(order_[i])) return true;
+      }
     } else {
       stack[top++] = node.begin + 1;
       stack[top++] = node.begin;
     }
   }
+  return false;
 }
 
 }  // namespace linesurf::detect
