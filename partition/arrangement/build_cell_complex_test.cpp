@@ -51,6 +51,23 @@ Vec3 RandomUnit(Rng& rng) {
   return n.normalized();
 }
 
+TEST(ExactPredicates, SignAtPointIsExactWhereDoublesRoundTheWrongWay) {
+  // 1e16 + 3 - 1e16 - 3.5 = -0.5, but in doubles 1e16 + 3 rounds to 1e16 + 4 and the sum to +0.5:
+  // the double filter must not decide it.
+  EXPECT_EQ(ExactSignAtPoint(Eigen::Vector4d(1, 1, -1, -3.5), Vec3(1e16, 3, 1e16)), -1);
+  EXPECT_EQ(ExactSignAtPoint(Eigen::Vector4d(1, 1, -1, -3), Vec3(1e16, 3, 1e16)), 0);
+  EXPECT_EQ(ExactSignAtPoint(Eigen::Vector4d(1, 1, -1, -2.5), Vec3(1e16, 3, 1e16)), 1);
+  // One ulp off a plane far from the origin, and clearly off it.
+  const double x0 = 1e6 + 0.1;
+  const Eigen::Vector4d plane(1, 0, 0, -x0);
+  EXPECT_EQ(ExactSignAtPoint(plane, Vec3(x0, 1e6, -1e6)), 0);
+  EXPECT_EQ(ExactSignAtPoint(plane, Vec3(std::nextafter(x0, 2e6), 1e6, -1e6)), 1);
+  EXPECT_EQ(ExactSignAtPoint(plane, Vec3(std::nextafter(x0, 0.0), 1e6, -1e6)), -1);
+  EXPECT_EQ(ExactSignAtPoint(plane, Vec3(x0 + 1, 1e6, -1e6)), 1);
+  EXPECT_EQ(ExactSignDot(Vec3(1, 1, -1), Vec3(1e16, 2, 1e16)), 1);
+  EXPECT_EQ(ExactSignDot(Vec3(1, 1, -1), Vec3(1e16, 0, 1e16)), 0);
+}
+
 TEST(ExactPredicates, VertexSignConvention) {
   const Eigen::Vector4d x(1, 0, 0, 0), y(0, 1, 0, 0), z(0, 0, 1, 0);
   const Eigen::Vector4d x_minus_one(1, 0, 0, -1);  // negative at the origin
