@@ -20,32 +20,6 @@ constexpr char kBuildCellComplexStage[] = "cell_complex";
 /// Cells visited between two cancellation polls inside one plane insertion.
 constexpr std::uint32_t kCancelPollCells = 4096;
 
-/// Relative rounding-error bound of the double filter that evaluates a plane over a box of
-/// coordinates (a handful of products and sums; generous against the ~4u worst case).
-constexpr double kFilterRelativeError = 1e-14;
-/// Absolute slack of the same filter (covers underflow).
-constexpr double kFilterAbsoluteError = 1e-300;
-
-/// Conservative range of a*x + b*y + c*z + d over the box [lo, hi]: returns -1 / +1 when the
-/// whole box is certainly strictly on one side, 0 otherwise.
-int BoxSide(const Eigen::Vector4d& p, const Vec3& lo, const Vec3& hi) {
-  double vmin = p[3];
-  double vmax = p[3];
-  double magnitude = std::abs(p[3]);
-  for (int c = 0; c < 3; ++c) {
-    const double a = p[c];
-    const double x = a * lo[c];
-    const double y = a * hi[c];
-    vmin += std::min(x, y);
-    vmax += std::max(x, y);
-    magnitude += std::max(std::abs(x), std::abs(y));
-  }
-  const double err = kFilterRelativeError * magnitude + kFilterAbsoluteError;
-  if (vmin - err > 0) return 1;
-  if (vmax + err < 0) return -1;
-  return 0;
-}
-
 /// The arrangement while it is built: plain vectors, one small vector per element.
 class Builder {
  public:
@@ -143,7 +117,7 @@ void Builder::InitBox(const Box3& box) {
 int Builder::Sign(std::uint32_t v) {
   if (sign_stamp_[v] == stamp_) return sign_[v];
   const Eigen::Vector4d& p = planes[pid_];
-  int s = BoxSide(p, vertex_lo_[v], vertex_hi_[v]);
+  int s = FilteredBoxSide(p, vertex_lo_[v], vertex_hi_[v]);
   if (s == 0) {
     const auto& d = vertex_def_[v];
     s = ExactSignAtVertex(planes[d[0]], planes[d[1]], planes[d[2]], p, counter_);
@@ -331,7 +305,7 @@ void Builder::Insert(std::uint32_t pid, const RunContext& ctx) {
   const std::size_t num_cells = cell_facets_.size();
   for (std::uint32_t c = 0; c < num_cells; ++c) {
     if (c % kCancelPollCells == kCancelPollCells - 1) ctx.ThrowIfCancelled(kBuildCellComplexStage);
-    if (BoxSide(planes[pid], cell_lo_[c], cell_hi_[c]) != 0) continue;
+    if (FilteredBoxSide(planes[pid], cell_lo_[c], cell_hi_[c]) != 0) continue;
     bool has_pos = false, has_neg = false;
     for (const std::uint32_t f : cell_facets_[c]) {
       for (const std::uint32_t v : facet_cycle_[f]) {

@@ -7,8 +7,8 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/determinant.h>
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 
 namespace linesurf::partition {
@@ -28,10 +28,11 @@ auto WithUpwardRounding(const F& f) {
   return f();
 }
 
-/// The double filter's range: below, products may be subnormal (their error is no longer
-/// relative); above, the sum may overflow.
-constexpr double kSmallestFilteredMagnitude = 1e-280;
-constexpr double kLargestFilteredMagnitude = 1e280;
+/// Relative rounding-error bound of the double filter that evaluates a plane over a box of
+/// coordinates (a handful of products and sums; generous against the ~4u worst case).
+constexpr double kFilterRelativeError = 1e-14;
+/// Absolute slack of the same filter (covers underflow).
+constexpr double kFilterAbsoluteError = 1e-300;
 
 /// Relative width above which a vertex box is recomputed exactly (tighter boxes mean fewer exact
 /// sign fallbacks later).
@@ -101,30 +102,28 @@ void Cramer(const Eigen::Vector4d& i, const Eigen::Vector4d& j, const Eigen::Vec
 
 }  // namespace
 
-namespace {
-
-/// The sign of a x + b y + c z + d when plain doubles decide it, else 2 (no rounding-mode
-/// switch: the sight-ray walks ask for such signs at every plane of every cell they cross). Each
-/// of the 3 products and 3 additions errs by at most u = 2^-53 relatively, so the computed value
-/// lies within about 4 u (|a x| + |b y| + |c z| + |d|) of the exact one; the filter trusts signs
-/// beyond 16 u of it, and nothing when that sum is small enough for the products to underflow.
-int FilteredSign(const Vec3& abc, const Vec3& xyz, double d) {
-  const double ax = abc[0] * xyz[0];
-  const double by = abc[1] * xyz[1];
-  const double cz = abc[2] * xyz[2];
-  const double value = ax + by + cz + d;
-  const double magnitude = std::abs(ax) + std::abs(by) + std::abs(cz) + std::abs(d);
-  if (!(magnitude > kSmallestFilteredMagnitude && magnitude < kLargestFilteredMagnitude)) return 2;
-  const double bound = 8.0 * std::numeric_limits<double>::epsilon() * magnitude;
-  if (value > bound) return 1;
-  if (value < -bound) return -1;
-  return 2;
+int FilteredBoxSide(const Eigen::Vector4d& plane, const Vec3& lo, const Vec3& hi) {
+  double vmin = plane[3];
+  double vmax = plane[3];
+  double magnitude = std::abs(plane[3]);
+  for (int c = 0; c < 3; ++c) {
+    const double a = plane[c];
+    const double x = a * lo[c];
+    const double y = a * hi[c];
+    vmin += std::min(x, y);
+    vmax += std::max(x, y);
+    magnitude += std::max(std::abs(x), std::abs(y));
+  }
+  const double err = kFilterRelativeError * magnitude + kFilterAbsoluteError;
+  if (vmin - err > 0) return 1;
+  if (vmax + err < 0) return -1;
+  return 0;
 }
 
-}  // namespace
-
 int ExactSignAtPoint(const Eigen::Vector4d& plane, const Vec3& p, ExactCounter* counter) {
-  if (const int f = FilteredSign(plane.head<3>(), p, plane[3]); f != 2) return f;
+  // Plain doubles first, without the rounding-mode switch: the sight-ray walks ask this at
+  // every plane of every cell they cross.
+  if (const int f = FilteredBoxSide(plane, p, p); f != 0) return f;
   const int s = WithUpwardRounding([&] { return SignOf(Eval<Interval>(plane, p)); });
   if (s != 2) return s;
   CountFallback(counter);
@@ -132,7 +131,9 @@ int ExactSignAtPoint(const Eigen::Vector4d& plane, const Vec3& p, ExactCounter* 
 }
 
 int ExactSignDot(const Vec3& n, const Vec3& v, ExactCounter* counter) {
-  if (const int f = FilteredSign(n, v, 0.0); f != 2) return f;
+  if (const int f = FilteredBoxSide(Eigen::Vector4d(n[0], n[1], n[2], 0.0), v, v); f != 0) {
+    return f;
+  }
   const int s = WithUpwardRounding([&] { return SignOf(Dot<Interval>(n, v)); });
   if (s != 2) return s;
   CountFallback(counter);

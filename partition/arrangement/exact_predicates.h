@@ -22,6 +22,11 @@ struct ExactCounter {
   std::atomic<std::uint64_t> exact_fallbacks{0};
 };
 
+/// -1 / +1 when a*x + b*y + c*z + d is certainly of that sign over the whole box [lo, hi], by a
+/// double evaluation with a rigorous rounding bound; 0 when it cannot tell. The filter in front
+/// of the exact predicates below, and of the cell complex's tests over vertex and cell boxes.
+int FilteredBoxSide(const Eigen::Vector4d& plane, const Vec3& lo, const Vec3& hi);
+
 /// sign(a*x + b*y + c*z + d) exactly, in {-1, 0, +1}.
 int ExactSignAtPoint(const Eigen::Vector4d& plane, const Vec3& p, ExactCounter* counter = nullptr);
 
