@@ -83,16 +83,15 @@ std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vecto
   return out;
 }
 
-/// `tolerance` plus a slack for rounding, relative to the sizes and places of `box` and `plane`.
-double SlabTolerance(const Box3& box, const Plane3& plane, double tolerance) {
-  return tolerance +
-         1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + plane.point.norm());
+/// `tolerance` plus a slack for rounding, relative to it, to the size and place of `box` and to
+/// `place` (the norm of another point the test involves).
+double WithRoundingSlack(double tolerance, const Box3& box, double place = 0.0) {
+  return tolerance + 1e-9 * (tolerance + box.Extent().norm() + box.Center().norm() + place);
 }
 
-/// `max_gap` plus a slack for rounding, relative to the size and place of `box`: a box within
-/// max_gap of `box` by BoxGap overlaps `box` grown by this on every side.
-double GapTolerance(const Box3& box, double max_gap) {
-  return max_gap + 1e-9 * (max_gap + box.Extent().norm() + box.Center().norm());
+/// `tolerance` plus the slack, for a test of `box` against the slab of `plane`.
+double SlabTolerance(const Box3& box, const Plane3& plane, double tolerance) {
+  return WithRoundingSlack(tolerance, box, plane.point.norm());
 }
 
 /// Whether some point of the inliers' box lies within `tolerance` of `plane` (with the slack).
@@ -196,7 +195,8 @@ int FusePlanes(std::span<const Segment3> segments,
   const BoxBvh near_inputs(input_boxes);
   const auto for_each_input_near = [&](const Box3& box, auto&& fn) {
     Box3 reach = box;
-    const double gap = GapTolerance(box, params.max_gap);
+    // A box within max_gap of `box` by BoxGap overlaps `box` grown by this on every side.
+    const double gap = WithRoundingSlack(params.max_gap, box);
     reach.min.array() -= gap;
     reach.max.array() += gap;
     near_inputs.AnyOverlapping(reach, [&](std::uint32_t k) {

@@ -210,13 +210,6 @@ double FaceVolume(const PolygonMesh& mesh, std::size_t f) {
   return v;
 }
 
-/// The figures with the components in the order of FaceComponents (first face), each marked
-/// floating or not, and the component of every face.
-struct ComponentFigures {
-  SurfaceQuality quality;
-  std::vector<std::uint32_t> face_component;
-};
-
 void ThrowIfMembershipsMismatch(const Scene& scene) {
   LINESURF_THROW_IF(
       scene.HasMemberships() && scene.memberships.size() != scene.NumSegments(),
@@ -259,13 +252,14 @@ void MeasureSegments(const Scene& scene,
   ctx.ThrowIfCancelled(kSurfaceQualityStage);
 }
 
-/// The figures of the surface from its segments' figures, summed in segment order.
-ComponentFigures Aggregate(const PolygonMesh& mesh,
-                           const Scene& scene,
-                           const MeshIndex& index,
-                           const std::vector<SegmentFigures>& per_segment,
-                           double epsilon,
-                           const SurfaceQualityOptions& options) {
+/// The figures of the surface from its segments' figures, summed in segment order, with the
+/// components in the order of FaceComponents (first face), each marked floating or not.
+SurfaceQuality Aggregate(const PolygonMesh& mesh,
+                         const Scene& scene,
+                         const MeshIndex& index,
+                         const std::vector<SegmentFigures>& per_segment,
+                         double epsilon,
+                         const SurfaceQualityOptions& options) {
   SurfaceQuality q;
   q.epsilon = epsilon;
   q.fit_distance = options.fit_factor * epsilon;
@@ -316,14 +310,14 @@ ComponentFigures Aggregate(const PolygonMesh& mesh,
     component.floating =
         component.supported_lines < static_cast<std::size_t>(options.min_lines_per_component);
   }
-  return {std::move(q), index.face_component};
+  return q;
 }
 
-/// A surface measured: its index, every segment's figures and the surface's.
+/// A surface measured: its index, every segment's figures and the surface's (Aggregate).
 struct Analysis {
   MeshIndex index;
   std::vector<SegmentFigures> per_segment;
-  ComponentFigures figures;
+  SurfaceQuality quality;
 };
 
 /// `list_components`: each segment's figures list the components they depend on.
@@ -344,7 +338,7 @@ Analysis Analyse(const PolygonMesh& mesh,
       ctx,
       [](std::size_t) { return true; },
       out.per_segment);
-  out.figures = Aggregate(mesh, scene, out.index, out.per_segment, epsilon, options);
+  out.quality = Aggregate(mesh, scene, out.index, out.per_segment, epsilon, options);
   return out;
 }
 
@@ -375,7 +369,7 @@ SurfaceQuality Measure(const PolygonMesh& mesh,
                        const SurfaceQualityOptions& options,
                        const RunContext& ctx) {
   return Summarise(
-      Analyse(mesh, scene, epsilon, options, false, ctx).figures.quality, mesh, scene, epsilon);
+      Analyse(mesh, scene, epsilon, options, false, ctx).quality, mesh, scene, epsilon);
 }
 
 /// The figures of `kept`, the surface `index` measured into `per_segment` without the faces of
@@ -417,10 +411,8 @@ SurfaceQuality MeasureWithout(const PolygonMesh& kept,
       ctx,
       [&](std::size_t i) { return again[i] != 0; },
       per_segment);
-  return Summarise(Aggregate(kept, scene, kept_index, per_segment, epsilon, options).quality,
-                   kept,
-                   scene,
-                   epsilon);
+  return Summarise(
+      Aggregate(kept, scene, kept_index, per_segment, epsilon, options), kept, scene, epsilon);
 }
 
 FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
@@ -429,8 +421,8 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
                                 const SurfaceQualityOptions& options,
                                 const RunContext& ctx) {
   Analysis analysis = Analyse(mesh, scene, epsilon, options, true, ctx);
-  const ComponentFigures& figures = analysis.figures;
-  const std::vector<ComponentQuality>& components = figures.quality.components;
+  const std::vector<ComponentQuality>& components = analysis.quality.components;
+  const std::vector<std::uint32_t>& face_component = analysis.index.face_component;
   // Solid pieces only (positive volume: full cells inside): dropping the inner shell of a void
   // would fill the void. A surface of fragments only is left whole: what holds the most is not
   // known to be noise.
@@ -447,13 +439,13 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
   }
   if (out.removed_components == 0) {
     out.mesh = mesh;
-    out.quality = Summarise(figures.quality, mesh, scene, epsilon);
+    out.quality = Summarise(std::move(analysis.quality), mesh, scene, epsilon);
     return out;
   }
   // The kept faces and the vertices they use, each in their order.
   std::vector<std::uint32_t> new_index(mesh.vertices.size(), kNoVertex);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (removed[figures.face_component[f]]) continue;
+    if (removed[face_component[f]]) continue;
     for (std::uint32_t v : mesh.Face(f)) new_index[v] = 0;
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -463,7 +455,7 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
   }
   std::vector<std::uint32_t> face;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
-    if (removed[figures.face_component[f]]) continue;
+    if (removed[face_component[f]]) continue;
     face.clear();
     for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
     out.mesh.AddFace(face);

@@ -1,12 +1,16 @@
 #include "tools/eval/mesh_topology.h"
 
+#include "engine/core/coordinate_bound.h"
+#include "engine/core/disjoint_sets.h"
+#include "engine/core/exception.h"
+#include "engine/core/vector_area.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
-
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -14,10 +18,6 @@
 #include <numeric>
 #include <tuple>
 #include <vector>
-
-#include "engine/core/coordinate_bound.h"
-#include "engine/core/disjoint_sets.h"
-#include "engine/core/exception.h"
 
 namespace linesurf {
 namespace {
@@ -125,14 +125,12 @@ MeshTopology Check(const PolygonMesh& mesh) {
   // for any closed polygon mesh because the fan's inner edges cancel.
   for (const auto& face : faces) {
     const Vec3& a = mesh.vertices[face[0]];
-    Vec3 vector_area = Vec3::Zero();
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      const Vec3& b = mesh.vertices[face[k]];
-      const Vec3& c = mesh.vertices[face[k + 1]];
-      vector_area += 0.5 * (b - a).cross(c - a);
-      topo.signed_volume += a.dot(b.cross(c)) / 6.0;
+      topo.signed_volume += a.dot(mesh.vertices[face[k]].cross(mesh.vertices[face[k + 1]])) / 6.0;
     }
-    topo.area += vector_area.norm();
+    topo.area += 0.5 * TwiceVectorArea(face.size(), [&](std::size_t k) -> const Vec3& {
+                         return mesh.vertices[face[k]];
+                       }).norm();
   }
 
   // Directed edges (lo, hi, forward, face) sorted: groups are undirected edges.
