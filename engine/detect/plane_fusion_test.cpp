@@ -26,6 +26,16 @@ TEST(LimitMemberships, LargerPlanesKeepTheirSegmentsAndSmallLeftoversGo) {
   EXPECT_EQ(dropped, 4);  // plane 0's four memberships
 }
 
+/// eps 2 cm, eps_fus 6 cm, theta_fus 0.17 rad, p_fus 0.2.
+FusionParameters CentimetreParameters() {
+  FusionParameters params;
+  params.epsilon = 0.02;
+  params.epsilon_fusion = 0.06;
+  params.max_angle_rad = 0.17;
+  params.min_shared_fraction = 0.2;
+  return params;
+}
+
 TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
   // Two coplanar pieces of the plane z = 0, 10 apart along x.
   std::vector<Segment3> segments;
@@ -44,11 +54,7 @@ TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
     }
     return planes;
   };
-  FusionParameters params;
-  params.epsilon = 0.02;
-  params.epsilon_fusion = 0.06;
-  params.max_angle_rad = 0.17;
-  params.min_shared_fraction = 0.2;
+  FusionParameters params = CentimetreParameters();
   std::vector<SupportedPlane> unbounded = pieces();
   EXPECT_EQ(FusePlanes(segments, params, unbounded), 1);
   EXPECT_EQ(unbounded.size(), 1u);
@@ -75,11 +81,7 @@ TEST(FusePlanes, ALargeSupportSharesTheSegmentsInTheOtherPlanesSlabWhereverTheyL
   planes[1].plane.normal = Vec3(0.04 / 150.0, 0, 1).normalized();
   planes[1].plane.point = Vec3(0, 0, 0.04);
   planes[1].inliers = Ids({301, 302, 303, 304});
-  FusionParameters params;
-  params.epsilon = 0.02;
-  params.epsilon_fusion = 0.06;
-  params.max_angle_rad = 0.17;
-  params.min_shared_fraction = 0.2;
+  FusionParameters params = CentimetreParameters();
   EXPECT_EQ(FusePlanes(segments, params, planes), 1);
   ASSERT_EQ(planes.size(), 1u);
   EXPECT_EQ(planes[0].inliers.size(), 305u);
@@ -116,11 +118,7 @@ TEST(FusePlanes, ASegmentInSeveralPiecesOfAMergedPlaneCountsOnce) {
     for (int i = 0; i < 300; ++i) out[2].inliers.emplace_back(static_cast<std::uint32_t>(1001 + i));
     return out;
   };
-  FusionParameters params;
-  params.epsilon = 0.02;
-  params.epsilon_fusion = 0.06;
-  params.max_angle_rad = 0.17;
-  params.min_shared_fraction = 0.2;
+  FusionParameters params = CentimetreParameters();
   std::vector<SupportedPlane> refused = planes();
   EXPECT_EQ(FusePlanes(segments, params, refused), 1);
   ASSERT_EQ(refused.size(), 2u);
