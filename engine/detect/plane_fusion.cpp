@@ -5,6 +5,7 @@
 #include "engine/detect/segment_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -20,6 +21,10 @@ namespace {
 /// Supports larger than this are searched through the slab indexes of their pieces rather than
 /// walked: a merged ground of the whole city is met again by every piece of ground around it.
 constexpr std::size_t kIndexedSupport = 256;
+
+/// Slack on an angle between two planes computed with acos, far above its rounding (about 1e-8
+/// where the planes are nearly parallel).
+constexpr double kAngleSlack = 1e-6;
 
 /// The support of one input plane, with a hierarchy for slab queries built on first use. A merged
 /// plane's support is the union of its input planes' (merges take unions), so it is searched
@@ -169,6 +174,50 @@ double PairAngle(std::span<const Segment3> segments,
   return SharesEnough(segments, params, node_a, node_b, needed) ? angle : -1.0;
 }
 
+/// The input planes' boxes in one hierarchy per class of normal (the axis of its largest
+/// component), so that a query skips the classes no normal within max_angle of its own can
+/// belong to.
+class OrientedBoxIndex {
+ public:
+  OrientedBoxIndex(const std::vector<FusionNode>& nodes, double max_angle)
+      : reach_(2.0 * (max_angle + kAngleSlack)) {
+    std::array<std::vector<Box3>, 3> boxes;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const int c = ClassOf(nodes[i].data.plane.normal);
+      boxes[c].push_back(nodes[i].box);
+      members_[c].push_back(i);
+    }
+    for (int c = 0; c < 3; ++c) bvh_[c] = std::make_unique<BoxBvh>(boxes[c]);
+  }
+
+  /// Calls fn(i) for every input i whose box overlaps `box` (boundaries included) and whose
+  /// normal may lie within max_angle of `normal` (unit), class by class.
+  template <typename Fn>
+  void ForEachOverlapping(const Box3& box, const Vec3& normal, Fn&& fn) const {
+    const Vec3 size = normal.cwiseAbs();
+    for (int c = 0; c < 3; ++c) {
+      // A unit normal n within angle a of +-normal differs from it by at most a in every
+      // component, so n's largest component can be c only if this holds.
+      if (size[c] < size.maxCoeff() - reach_) continue;
+      bvh_[c]->AnyOverlapping(box, [&](std::uint32_t k) {
+        fn(members_[c][k]);
+        return false;
+      });
+    }
+  }
+
+ private:
+  static int ClassOf(const Vec3& normal) {
+    int axis = 0;
+    normal.cwiseAbs().maxCoeff(&axis);
+    return axis;
+  }
+
+  double reach_;  ///< 2 (max_angle + kAngleSlack)
+  std::array<std::vector<std::size_t>, 3> members_;
+  std::array<std::unique_ptr<BoxBvh>, 3> bvh_;
+};
+
 }  // namespace
 
 int FusePlanes(std::span<const Segment3> segments,
@@ -186,26 +235,21 @@ int FusePlanes(std::span<const Segment3> segments,
   // found in.
   using Pair = std::tuple<double, std::size_t, std::size_t>;
   std::priority_queue<Pair, std::vector<Pair>, std::greater<>> queue;
-  // The input planes whose boxes come within max_gap of a box: the only partners PairAngle can
-  // accept among them, found without pairing every plane with every other.
+  // The input planes whose boxes come within max_gap of a box and whose normals may lie within
+  // max_angle of a normal: the only partners PairAngle can accept among them, found without
+  // pairing every plane with every other (the walls of a street are not asked about its roofs).
   const std::size_t inputs = nodes.size();
-  std::vector<Box3> input_boxes;
-  input_boxes.reserve(inputs);
-  for (const FusionNode& node : nodes) input_boxes.push_back(node.box);
-  const BoxBvh near_inputs(input_boxes);
-  const auto for_each_input_near = [&](const Box3& box, auto&& fn) {
-    Box3 reach = box;
+  const OrientedBoxIndex near_inputs(nodes, params.max_angle_rad);
+  const auto for_each_input_near = [&](const FusionNode& node, auto&& fn) {
+    Box3 reach = node.box;
     // A box within max_gap of `box` by BoxGap overlaps `box` grown by this on every side.
-    const double gap = WithRoundingSlack(params.max_gap, box);
+    const double gap = WithRoundingSlack(params.max_gap, node.box);
     reach.min.array() -= gap;
     reach.max.array() += gap;
-    near_inputs.AnyOverlapping(reach, [&](std::uint32_t k) {
-      fn(static_cast<std::size_t>(k));
-      return false;
-    });
+    near_inputs.ForEachOverlapping(reach, node.data.plane.normal, fn);
   };
   for (std::size_t i = 0; i < inputs; ++i) {
-    for_each_input_near(nodes[i].box, [&](std::size_t j) {
+    for_each_input_near(nodes[i], [&](std::size_t j) {
       if (j <= i) return;
       const double angle = PairAngle(segments, params, nodes[i], nodes[j]);
       if (angle >= 0.0) queue.emplace(angle, i, j);
@@ -240,7 +284,7 @@ int FusePlanes(std::span<const Segment3> segments,
       const double a = PairAngle(segments, params, nodes[k], nodes[fresh]);
       if (a >= 0.0) queue.emplace(a, k, fresh);
     };
-    for_each_input_near(nodes[fresh].box, pair_with_fresh);
+    for_each_input_near(nodes[fresh], pair_with_fresh);
     for (std::size_t k = inputs; k < fresh; ++k) pair_with_fresh(k);  // merged planes
   }
   std::vector<FusionNode*> alive;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace linesurf::detect {
 namespace {
 
@@ -62,6 +64,38 @@ TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
   std::vector<SupportedPlane> local = pieces();
   EXPECT_EQ(FusePlanes(segments, params, local), 0);
   EXPECT_EQ(local.size(), 2u);
+}
+
+TEST(FusePlanes, PiecesWhoseNormalsLieEitherSideOfADiagonalStillMeet) {
+  // Two pieces of the wall x = y, each 4 segments, with normals 0.1 rad either side of the
+  // diagonal (1, 1, 0): the largest component of one is x, of the other y. Fusion indexes the
+  // planes by that axis and must still pair them (0.2 rad apart, under max_angle 0.25).
+  std::vector<Segment3> segments;
+  for (int i = 0; i < 8; ++i) {
+    const double t = 0.5 * i;
+    segments.push_back({Vec3(t, t, 0), Vec3(t, t, 1)});
+  }
+  const double diagonal = std::atan2(-1.0, 1.0);  // the wall's normal direction, (1, -1, 0)
+  std::vector<SupportedPlane> planes(2);
+  for (int p = 0; p < 2; ++p) {
+    const double a = diagonal + (p == 0 ? -0.1 : 0.1);
+    planes[p].plane.normal = Vec3(std::cos(a), std::sin(a), 0);
+    planes[p].plane.point = segments[4 * p].p1;
+    planes[p].inliers = Ids({4 * p, 4 * p + 1, 4 * p + 2, 4 * p + 3});
+  }
+  int x_larger = 0;
+  for (const SupportedPlane& p : planes) {
+    x_larger += std::abs(p.plane.normal.x()) > std::abs(p.plane.normal.y()) ? 1 : 0;
+  }
+  ASSERT_EQ(x_larger, 1) << "the two normals must fall in different classes";
+  FusionParameters params = CentimetreParameters();
+  params.epsilon = 0.5;  // the tilted pieces still hold each other's segments in their slabs
+  params.epsilon_fusion = 1.0;
+  params.max_angle_rad = 0.25;
+  params.min_shared_fraction = 0.5;
+  EXPECT_EQ(FusePlanes(segments, params, planes), 1);
+  ASSERT_EQ(planes.size(), 1u);
+  EXPECT_EQ(planes[0].inliers.size(), 8u);
 }
 
 TEST(FusePlanes, ALargeSupportSharesTheSegmentsInTheOtherPlanesSlabWhereverTheyLie) {
