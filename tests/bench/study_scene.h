@@ -1,12 +1,12 @@
 #pragma once
-// The scene of the block studies: read and sanitised (local frame), and its box: the box of the
-// segments and viewpoints grown by 5 % of each extent on every side (the reconstruct default
-// box_margin).
+// The scene of the block studies: read and sanitised (local frame), and its box: reconstruct's
+// (pipeline::SceneBox) at the default box_margin.
 
 #include "engine/core/geometry.h"
 #include "engine/core/scene.h"
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/sanitize_scene.h"
+#include "engine/pipeline/scene_box.h"
 
 #include <cstdio>
 #include <optional>
@@ -29,17 +29,6 @@ inline std::optional<Scene> ReadStudyScene(const std::string& path) {
   return std::move(sane->scene);
 }
 
-inline Box3 StudySceneBox(const Scene& scene) {
-  Box3 box;
-  for (const Segment3& s : scene.segments) {
-    box.Extend(s.p1);
-    box.Extend(s.p2);
-  }
-  for (const Vec3& v : scene.viewpoints) box.Extend(v);
-  const Vec3 grow = 0.05 * box.Extent();
-  box.min -= grow;
-  box.max += grow;
-  return box;
-}
+inline Box3 StudySceneBox(const Scene& scene) { return pipeline::SceneBox(scene, 0.05); }
 
 }  // namespace linesurf
