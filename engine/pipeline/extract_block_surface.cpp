@@ -367,6 +367,31 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
   return out;
 }
 
+/// The edges where a face continues flat into its partner: both on one plane with one outward
+/// normal, across an edge that no other face meets (a crowded edge carries other faces, which
+/// must keep it). Block faces split a wall into such pieces, and so do the lines where planes
+/// without surface there cut it.
+std::vector<FlatJoin> FlatJoins(const SurfaceCycles& s,
+                                const std::vector<const RawFace*>& faces,
+                                const std::vector<EdgePair>& crowded) {
+  std::vector<std::uint32_t> crowded_edges;
+  for (const EdgePair& p : crowded) crowded_edges.push_back(p.edge);
+  std::sort(crowded_edges.begin(), crowded_edges.end());
+  std::vector<FlatJoin> joins;
+  for (std::uint32_t f = 0; f < s.NumFaces(); ++f) {
+    for (std::uint32_t k = s.offsets[f]; k < s.offsets[f + 1]; ++k) {
+      const std::uint32_t g = s.partner[k];
+      if (g == kNoIndex || g <= f || faces[f]->plane != faces[g]->plane ||
+          faces[f]->normal != faces[g]->normal ||
+          std::binary_search(crowded_edges.begin(), crowded_edges.end(), s.corner_edge[k])) {
+        continue;
+      }
+      joins.push_back({s.corner_edge[k], f, g});
+    }
+  }
+  return joins;
+}
+
 /// Pairs the faces on every edge that lies on a block face; appends pairs of edges with more
 /// than two faces to `crowded`; returns the number of such edges and of all edges.
 std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
@@ -375,8 +400,7 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
                                                 std::vector<LineCorner>& line_corners,
                                                 std::uint32_t first_edge_id,
                                                 SurfaceCycles& s,
-                                                std::vector<EdgePair>& crowded,
-                                                std::vector<FlatJoin>* joins) {
+                                                std::vector<EdgePair>& crowded) {
   std::sort(line_corners.begin(), line_corners.end(), [](const LineCorner& a, const LineCorner& b) {
     return std::tie(a.lo, a.hi, a.corner) < std::tie(b.lo, b.hi, b.corner);
   });
@@ -408,11 +432,6 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
       const std::uint32_t b = line_corners[i + 1].face;
       s.partner[line_corners[i].corner] = b;
       s.partner[line_corners[i + 1].corner] = a;
-      // A flat continuation of one plane across an edge on a block face.
-      if (joins != nullptr && faces[a]->plane == faces[b]->plane &&
-          faces[a]->normal == faces[b]->normal) {
-        joins->push_back({edge, a, b});
-      }
     } else {
       ++non_manifold;
       around.clear();
@@ -583,16 +602,8 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
       crowded.insert(crowded.end(), block_crowded[b].begin(), block_crowded[b].end());
       result.stats.non_manifold_edges += block_non_manifold[b];
     }
-    std::vector<FlatJoin> joins;
     const auto [non_manifold, on_faces_edges] =
-        PairOnFaces(cx,
-                    mv,
-                    faces,
-                    line_corners,
-                    edge_offset.back(),
-                    s,
-                    crowded,
-                    options.merge_coplanar ? &joins : nullptr);
+        PairOnFaces(cx, mv, faces, line_corners, edge_offset.back(), s, crowded);
     result.stats.non_manifold_edges += non_manifold;
     result.stitch.edges_on_block_faces = on_faces_edges;
 
@@ -600,7 +611,8 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
     std::vector<std::uint32_t> first_face(s.NumFaces());
     for (std::uint32_t f = 0; f < first_face.size(); ++f) first_face[f] = f;
     if (options.merge_coplanar) {
-      MergedCycles merged = MergeAcrossJoins(s, joins, crowded, mv.points.size());
+      MergedCycles merged =
+          MergeAcrossJoins(s, FlatJoins(s, faces, crowded), crowded, mv.points.size());
       s = std::move(merged.cycles);
       crowded = std::move(merged.crowded);
       first_face = std::move(merged.first_face);
