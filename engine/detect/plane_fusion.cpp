@@ -176,7 +176,7 @@ double PairAngle(std::span<const Segment3> segments,
 
 /// The input planes' boxes in one hierarchy per class of normal (the axis of its largest
 /// component), so that a query skips the classes no normal within max_angle of its own can
-/// belong to.
+/// belong to. Normals are unit (RANSAC and FitPlane normalise them).
 class OrientedBoxIndex {
  public:
   OrientedBoxIndex(const std::vector<FusionNode>& nodes, double max_angle)
@@ -194,11 +194,12 @@ class OrientedBoxIndex {
   /// normal may lie within max_angle of `normal` (unit), class by class.
   template <typename Fn>
   void ForEachOverlapping(const Box3& box, const Vec3& normal, Fn&& fn) const {
-    const Vec3 size = normal.cwiseAbs();
+    const Vec3 magnitude = normal.cwiseAbs();
     for (int c = 0; c < 3; ++c) {
-      // A unit normal n within angle a of +-normal differs from it by at most a in every
-      // component, so n's largest component can be c only if this holds.
-      if (size[c] < size.maxCoeff() - reach_) continue;
+      // A unit normal n within angle a of +-normal m differs from it by at most a in every
+      // component; if n's largest component is c, then |m_c| >= |n_c| - a >= |n_k| - a >=
+      // |m_k| - 2a for every axis k.
+      if (magnitude[c] < magnitude.maxCoeff() - reach_) continue;
       bvh_[c]->AnyOverlapping(box, [&](std::uint32_t k) {
         fn(members_[c][k]);
         return false;
@@ -213,7 +214,7 @@ class OrientedBoxIndex {
     return axis;
   }
 
-  double reach_;  ///< 2 (max_angle + kAngleSlack)
+  double reach_;  ///< how far below the largest component a class's may lie: 2 (max_angle + slack)
   std::array<std::vector<std::size_t>, 3> members_;
   std::array<std::unique_ptr<BoxBvh>, 3> bvh_;
 };

@@ -67,27 +67,29 @@ TEST(FusePlanes, PiecesOfOnePlaneMergeOnlyWhenTheyAreWithinTheGap) {
 }
 
 TEST(FusePlanes, PiecesWhoseNormalsLieEitherSideOfADiagonalStillMeet) {
-  // Two pieces of the wall x = y, each 4 segments, with normals 0.1 rad either side of the
-  // diagonal (1, 1, 0): the largest component of one is x, of the other y. Fusion indexes the
-  // planes by that axis and must still pair them (0.2 rad apart, under max_angle 0.25).
+  // Two pieces of the wall x = y (normal (1, -1, 0)), 4 segments each, their normals 0.24 rad
+  // and 0.005 rad either side of the wall's: 0.245 rad apart, under max_angle 0.25. The largest
+  // component of the first normal is x, of the second y; fusion indexes the planes by that axis,
+  // and the first (the one that asks: the lower index) differs from the second's class by 0.34
+  // in its components, more than max_angle: a bound of max_angle instead of twice it would skip
+  // the pair.
   std::vector<Segment3> segments;
   for (int i = 0; i < 8; ++i) {
-    const double t = 0.5 * i;
+    const double t = 0.2 * i;
     segments.push_back({Vec3(t, t, 0), Vec3(t, t, 1)});
   }
-  const double diagonal = std::atan2(-1.0, 1.0);  // the wall's normal direction, (1, -1, 0)
+  const double wall_normal = std::atan2(-1.0, 1.0);
   std::vector<SupportedPlane> planes(2);
   for (int p = 0; p < 2; ++p) {
-    const double a = diagonal + (p == 0 ? -0.1 : 0.1);
+    const double a = wall_normal + (p == 0 ? 0.24 : -0.005);
     planes[p].plane.normal = Vec3(std::cos(a), std::sin(a), 0);
-    planes[p].plane.point = segments[4 * p].p1;
+    planes[p].plane.point = Vec3(0.7, 0.7, 0.5);
     planes[p].inliers = Ids({4 * p, 4 * p + 1, 4 * p + 2, 4 * p + 3});
   }
-  int x_larger = 0;
-  for (const SupportedPlane& p : planes) {
-    x_larger += std::abs(p.plane.normal.x()) > std::abs(p.plane.normal.y()) ? 1 : 0;
-  }
-  ASSERT_EQ(x_larger, 1) << "the two normals must fall in different classes";
+  const Vec3 first = planes[0].plane.normal.cwiseAbs();
+  const Vec3 second = planes[1].plane.normal.cwiseAbs();
+  ASSERT_GT(first.x(), first.y() + 0.3) << "the first normal must lie well inside class x";
+  ASSERT_GT(second.y(), second.x()) << "the second normal must lie in class y";
   FusionParameters params = CentimetreParameters();
   params.epsilon = 0.5;  // the tilted pieces still hold each other's segments in their slabs
   params.epsilon_fusion = 1.0;

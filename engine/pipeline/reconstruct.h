@@ -87,8 +87,9 @@ struct ReconstructOptions {
       .min_block_lengths = 8.0};
   SceneMode scene_mode = SceneMode::kAuto;
   /// The box is the bounding box of the segments and viewpoints grown on each side by this
-  /// fraction of its extent along that axis (at least this fraction of its diagonal). Range
-  /// (0, 10]. Default 0.05, as the reference, so viewpoints lie in bounded cells.
+  /// fraction of its extent along that axis (an axis under 1 % of the largest extent counts as
+  /// that thick: SceneBox). Range (0, 10]. Default 0.05, as the reference, so viewpoints lie in
+  /// bounded cells.
   double box_margin = 0.05;
   /// Measure the surface against the segments (surface_quality.h) and report it in
   /// RunStats::quality. Default true.

@@ -9,9 +9,9 @@ namespace linesurf::pipeline {
 /// The bounding box of the segments and viewpoints grown on each side by `margin` times its
 /// extent along that axis (the reference's rule); an axis thinner than 1 % of the largest extent
 /// grows as if it were that thick, so that a flat scene still gets a box with room around it.
-/// The growth of an axis depends on the other axes only when it is that thin: a city twice as
-/// wide gets no more empty air above it (a margin of the diagonal gave city-1000 13 layers of
-/// blocks where 3 hold its buildings and viewpoints). `margin` > 0.
+/// The growth of an axis depends on the other axes only when it is that thin, so a city twice as
+/// wide gets no more empty air above it (docs/reconstruction.md, "Box"). `margin` > 0; a scene
+/// whose points all coincide gets a box of no size.
 [[nodiscard]] Box3 SceneBox(const Scene& scene, double margin);
 
 }  // namespace linesurf::pipeline

@@ -5,6 +5,7 @@
 #include "engine/core/geometry.h"
 #include "engine/core/scene.h"
 #include "engine/io/read_scene.h"
+#include "engine/pipeline/reconstruct.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/scene_box.h"
 
@@ -29,6 +30,8 @@ inline std::optional<Scene> ReadStudyScene(const std::string& path) {
   return std::move(sane->scene);
 }
 
-inline Box3 StudySceneBox(const Scene& scene) { return pipeline::SceneBox(scene, 0.05); }
+inline Box3 StudySceneBox(const Scene& scene) {
+  return pipeline::SceneBox(scene, pipeline::ReconstructOptions{}.box_margin);
+}
 
 }  // namespace linesurf
