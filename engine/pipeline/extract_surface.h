@@ -34,11 +34,11 @@ struct ExtractOptions {
   /// vertex when a face has straight corners (vertices of neighbouring facets on its sides), so
   /// no triangle is degenerate. Default false: convex polygons.
   bool triangulate = false;
-  /// Block engine only (ExtractBlockSurface; one complex has no seams): faces of one plane (an
-  /// input plane, or a block face carrying seam facets), on the same side of it, that meet alone
-  /// across edges on block faces are merged into one polygon where the union is one simple
-  /// polygon (it may then be non-convex, so not together with `triangulate`). Default false: the
-  /// facets of the blocks and seams.
+  /// Block engine only (ExtractBlockSurface): faces of one plane (an input plane, or a block face
+  /// carrying seam facets), on the same side of it, that meet alone across an edge (on a block
+  /// face, or where a plane without surface there cuts them) are merged into one polygon where
+  /// the union is one simple polygon (it may then be non-convex, so not together with
+  /// `triangulate`). Default false: the facets of the blocks and seams.
   bool merge_coplanar = false;
 };
 

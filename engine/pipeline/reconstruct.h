@@ -102,8 +102,9 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
-  /// Blocks engine: neighbouring faces of one plane split only by block faces become one
-  /// polygon (ExtractOptions::merge_coplanar), which may be non-convex; not with triangulate.
+  /// Blocks engine: neighbouring faces of one plane with one outward side (split by block faces
+  /// or by planes without surface there) become one polygon (ExtractOptions::merge_coplanar),
+  /// which may be non-convex; not with triangulate.
   /// Default false: the blocks' facets.
   bool merge_coplanar = false;
   /// Worker threads: 0 = automatic, 1 = serial. Results do not depend on it.

@@ -245,10 +245,11 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.AddFlag("cityjson", args->cityjson,
             "Write CityJSON whatever the output extension (one Building per connected part)");
   r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
-  r.AddFlag("merge-coplanar",
-            o.merge_coplanar,
-            "Blocks engine: neighbouring faces of one plane split only by block faces become one "
-            "polygon (may be non-convex; not with --triangulate)");
+  r.AddFlag(
+      "merge-coplanar",
+      o.merge_coplanar,
+      "Blocks engine: neighbouring faces of one plane (split by block faces or by planes "
+      "without surface there) become one polygon (may be non-convex; not with --triangulate)");
   r.AddFlag("quality",
             o.measure_quality,
             "Figures without ground truth in the report (data fit, visibility, components; "

@@ -192,8 +192,9 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
-  /// Blocks engine: neighbouring faces of one plane that only block faces split become one
-  /// polygon, which may be non-convex (not with triangulate). Default false: convex faces.
+  /// Blocks engine: neighbouring faces of one plane with one outward side (split by block faces
+  /// or by planes without surface there) become one polygon, which may be non-convex (not with
+  /// triangulate). Default false: convex faces.
   bool merge_coplanar = false;
   /// Worker threads: 0 = automatic, 1 = serial ([0, kMaxThreads]). Results do not depend on it.
   int num_threads = 0;
