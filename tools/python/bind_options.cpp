@@ -161,7 +161,8 @@ void BindOptions(py::module_& m) {
           .Field("triangulate", &R::triangulate, "triangulate the output faces")
           .Field("merge_coplanar",
                  &R::merge_coplanar,
-                 "blocks engine: coplanar faces split by block faces merged (not with triangulate)")
+                 "blocks engine: neighbouring faces of one plane (split by block faces or by "
+                 "planes without surface there) merged (not with triangulate)")
           .Field("num_threads", &R::num_threads, "worker threads (0 = automatic)")
           .Field("seed", &R::seed, "seed of every random stream")
           .Finish();
