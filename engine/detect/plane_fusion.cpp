@@ -174,26 +174,56 @@ double PairAngle(std::span<const Segment3> segments,
   return SharesEnough(segments, params, node_a, node_b, needed) ? angle : -1.0;
 }
 
-/// The input planes' boxes in one hierarchy per class of normal (the axis of its largest
-/// component), so that a query skips the classes no normal within max_angle of its own can
-/// belong to. Normals are unit (RANSAC and FitPlane normalise them).
-class OrientedBoxIndex {
+/// The alive nodes' boxes in one hierarchy per class of normal (the axis of its largest
+/// component), so that a query skips the classes no normal within max_angle of its own can belong
+/// to, and the nodes added since the hierarchies were built, walked one by one. Normals are unit
+/// (RANSAC and FitPlane normalise them). A node that dies stays in its hierarchy until the dead
+/// and the added outnumber a quarter of what the hierarchies hold; then they are rebuilt from the
+/// alive nodes. Without the rebuild a merged plane's query met again every piece it had swallowed
+/// (a street's facade or a city's ground grows piece by piece), and every merged plane was walked
+/// for every merge: quadratic in the pieces.
+class NearNodeIndex {
  public:
-  OrientedBoxIndex(const std::vector<FusionNode>& nodes, double max_angle)
-      : reach_(2.0 * (max_angle + kAngleSlack)) {
+  explicit NearNodeIndex(double max_angle) : reach_(2.0 * (max_angle + kAngleSlack)) {}
+
+  /// Indexes the alive nodes, and forgets the added and dead ones.
+  void Rebuild(const std::vector<FusionNode>& nodes) {
     std::array<std::vector<Box3>, 3> boxes;
+    for (auto& members : members_) members.clear();
     for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (!nodes[i].alive) continue;
       const int c = ClassOf(nodes[i].data.plane.normal);
       boxes[c].push_back(nodes[i].box);
       members_[c].push_back(i);
     }
-    for (int c = 0; c < 3; ++c) bvh_[c] = std::make_unique<BoxBvh>(boxes[c]);
+    indexed_ = 0;
+    for (int c = 0; c < 3; ++c) {
+      bvh_[c] = std::make_unique<BoxBvh>(boxes[c]);
+      indexed_ += members_[c].size();
+    }
+    added_.clear();
+    stale_ = 0;
   }
 
-  /// Calls fn(i) for every input i whose box overlaps `box` (boundaries included) and whose
-  /// normal may lie within max_angle of `normal` (unit), class by class.
+  /// Node `i` joins the walked list (it is found from the next query on).
+  void Add(std::size_t i) {
+    added_.push_back(i);
+    ++stale_;
+  }
+
+  /// One node died (indexed or added).
+  void Retire() { ++stale_; }
+
+  /// Whether a rebuild now pays.
+  [[nodiscard]] bool Stale() const {
+    return stale_ > std::max(kMinStale, indexed_ / kStaleShareInverse);
+  }
+
+  /// Calls fn(i) for every node i, dead ones included, whose box may overlap `box` (boundaries
+  /// included) and whose normal may lie within max_angle of `normal` (unit): the indexed ones,
+  /// class by class, then the added ones (all of them).
   template <typename Fn>
-  void ForEachOverlapping(const Box3& box, const Vec3& normal, Fn&& fn) const {
+  void ForEachNear(const Box3& box, const Vec3& normal, Fn&& fn) const {
     const Vec3 magnitude = normal.cwiseAbs();
     for (int c = 0; c < 3; ++c) {
       // A unit normal n within angle a of +-normal m differs from it by at most a in every
@@ -205,9 +235,15 @@ class OrientedBoxIndex {
         return false;
       });
     }
+    for (const std::size_t i : added_) fn(i);
   }
 
  private:
+  /// Rebuild when the dead and added nodes outnumber a quarter of the indexed ones, and at
+  /// least 64 (a rebuild costs n log n; a query walks every added node).
+  static constexpr std::size_t kMinStale = 64;
+  static constexpr std::size_t kStaleShareInverse = 4;
+
   static int ClassOf(const Vec3& normal) {
     int axis = 0;
     normal.cwiseAbs().maxCoeff(&axis);
@@ -217,6 +253,9 @@ class OrientedBoxIndex {
   double reach_;  ///< how far below the largest component a class's may lie: 2 (max_angle + slack)
   std::array<std::vector<std::size_t>, 3> members_;
   std::array<std::unique_ptr<BoxBvh>, 3> bvh_;
+  std::vector<std::size_t> added_;
+  std::size_t indexed_ = 0;
+  std::size_t stale_ = 0;
 };
 
 }  // namespace
@@ -236,21 +275,21 @@ int FusePlanes(std::span<const Segment3> segments,
   // found in.
   using Pair = std::tuple<double, std::size_t, std::size_t>;
   std::priority_queue<Pair, std::vector<Pair>, std::greater<>> queue;
-  // The input planes whose boxes come within max_gap of a box and whose normals may lie within
+  // The planes whose boxes come within max_gap of a box and whose normals may lie within
   // max_angle of a normal: the only partners PairAngle can accept among them, found without
   // pairing every plane with every other (the walls of a street are not asked about its roofs).
-  const std::size_t inputs = nodes.size();
-  const OrientedBoxIndex near_inputs(nodes, params.max_angle_rad);
-  const auto for_each_input_near = [&](const FusionNode& node, auto&& fn) {
+  NearNodeIndex near_nodes(params.max_angle_rad);
+  near_nodes.Rebuild(nodes);
+  const auto for_each_node_near = [&](const FusionNode& node, auto&& fn) {
     Box3 reach = node.box;
     // A box within max_gap of `box` by BoxGap overlaps `box` grown by this on every side.
     const double gap = WithRoundingSlack(params.max_gap, node.box);
     reach.min.array() -= gap;
     reach.max.array() += gap;
-    near_inputs.ForEachOverlapping(reach, node.data.plane.normal, fn);
+    near_nodes.ForEachNear(reach, node.data.plane.normal, fn);
   };
-  for (std::size_t i = 0; i < inputs; ++i) {
-    for_each_input_near(nodes[i], [&](std::size_t j) {
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    for_each_node_near(nodes[i], [&](std::size_t j) {
       if (j <= i) return;
       const double angle = PairAngle(segments, params, nodes[i], nodes[j]);
       if (angle >= 0.0) queue.emplace(angle, i, j);
@@ -270,6 +309,8 @@ int FusePlanes(std::span<const Segment3> segments,
     if (!thin) continue;
     nodes[i].alive = false;
     nodes[j].alive = false;
+    near_nodes.Retire();
+    near_nodes.Retire();
     std::vector<std::shared_ptr<SupportPiece>> pieces = std::move(nodes[i].pieces);
     pieces.insert(pieces.end(), nodes[j].pieces.begin(), nodes[j].pieces.end());
     nodes[j].pieces.clear();
@@ -285,8 +326,9 @@ int FusePlanes(std::span<const Segment3> segments,
       const double a = PairAngle(segments, params, nodes[k], nodes[fresh]);
       if (a >= 0.0) queue.emplace(a, k, fresh);
     };
-    for_each_input_near(nodes[fresh], pair_with_fresh);
-    for (std::size_t k = inputs; k < fresh; ++k) pair_with_fresh(k);  // merged planes
+    for_each_node_near(nodes[fresh], pair_with_fresh);
+    near_nodes.Add(fresh);
+    if (near_nodes.Stale()) near_nodes.Rebuild(nodes);
   }
   std::vector<FusionNode*> alive;
   for (FusionNode& node : nodes) {

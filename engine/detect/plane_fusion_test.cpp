@@ -167,5 +167,33 @@ TEST(FusePlanes, ASegmentInSeveralPiecesOfAMergedPlaneCountsOnce) {
   EXPECT_EQ(merged[0].inliers.size(), 1301u);
 }
 
+TEST(FusePlanes, HundredsOfPiecesInARowMergeIntoTheirTwoPlanes) {
+  // Two parallel rows of 300 touching pieces, on z = 0 and z = 1: 598 merges, enough for the
+  // index of near planes to be rebuilt many times (a merged plane must stay findable, and the
+  // pieces it swallowed must not come back).
+  constexpr int kPieces = 300;
+  std::vector<Segment3> segments;
+  std::vector<SupportedPlane> planes;
+  for (int row = 0; row < 2; ++row) {
+    for (int piece = 0; piece < kPieces; ++piece) {
+      SupportedPlane& plane = planes.emplace_back();
+      plane.plane = Plane3{Vec3(2.0 * piece, 0, row), Vec3::UnitZ()};
+      for (int i = 0; i < 4; ++i) {
+        const double x = 2.0 * piece + 0.5 * i;
+        plane.inliers.emplace_back(static_cast<std::uint32_t>(segments.size()));
+        segments.push_back({Vec3(x, 0, row), Vec3(x + 0.5, 1, row)});
+      }
+    }
+  }
+  FusionParameters params = CentimetreParameters();
+  params.max_gap = 0.1;
+  EXPECT_EQ(FusePlanes(segments, params, planes), 2 * (kPieces - 1));
+  ASSERT_EQ(planes.size(), 2u);
+  for (const SupportedPlane& plane : planes) {
+    EXPECT_EQ(plane.inliers.size(), static_cast<std::size_t>(4 * kPieces));
+    EXPECT_NEAR(std::abs(plane.plane.normal.z()), 1.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace linesurf::detect
