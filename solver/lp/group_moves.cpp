@@ -61,6 +61,11 @@ class GroupMover {
     });
   }
 
+  // ImproveLabels on the mover's free cells and incidence (built once, not once per pass).
+  std::size_t Flip(int max_passes, std::vector<std::uint8_t>& labels) const {
+    return ImproveLabels(e_, free_, incidence_, max_passes, labels);
+  }
+
   // Marks the free cells sharing a term with a cell whose label differs between `a` and `b`.
   void MarkAroundChanges(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
     for (std::size_t i = 0; i < free_.size(); ++i) {
@@ -192,7 +197,7 @@ std::size_t ImproveByGroupMoves(const EnergyInput& energy,
   for (int pass = 0; pass < max_passes; ++pass) {
     const std::size_t moved = mover.Sweep(labels, ctx);
     const std::vector<std::uint8_t> before = labels;
-    const std::size_t flipped = ImproveLabels(energy, kFlipPasses, labels);
+    const std::size_t flipped = mover.Flip(kFlipPasses, labels);
     if (flipped > 0) mover.MarkAroundChanges(before, labels);
     changed += moved + flipped;
     if (moved + flipped == 0) break;

@@ -49,7 +49,15 @@ std::size_t ImproveLabels(const EnergyInput& energy,
   LINESURF_ASSERT(labels.size() == energy.NumCells());
   const std::vector<CellId> free = energy.FreeCells();
   if (free.empty() || max_passes <= 0) return 0;
-  const TermIncidence incidence(energy, free);
+  return ImproveLabels(energy, free, TermIncidence(energy, free), max_passes, labels);
+}
+
+std::size_t ImproveLabels(const EnergyInput& energy,
+                          std::span<const CellId> free,
+                          const TermIncidence& incidence,
+                          int max_passes,
+                          std::vector<std::uint8_t>& labels) {
+  LINESURF_ASSERT(labels.size() == energy.NumCells());
   std::size_t flips = 0;
   for (int pass = 0; pass < max_passes; ++pass) {
     std::size_t pass_flips = 0;

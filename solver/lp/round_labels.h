@@ -1,11 +1,12 @@
 #pragma once
 // Rounding of relaxed cell values to 0/1 labels (rule in lp_backend.h).
 
+#include "solver/energy/energy_input.h"
+#include "solver/energy/term_incidence.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
-
-#include "solver/energy/energy_input.h"
 
 namespace linesurf::solver {
 
@@ -30,6 +31,15 @@ inline constexpr double kImproveTolerance = 1e-12;
 /// cell flipped when that lowers the energy (given the current labels of all others). Never
 /// raises the energy; deterministic, serial. Returns the number of flips.
 std::size_t ImproveLabels(const EnergyInput& energy, int max_passes,
+                          std::vector<std::uint8_t>& labels);
+
+/// The same, with the free cells (energy.FreeCells()) and their incidence given: a caller that
+/// searches again and again (group moves, pass after pass) builds them once, where each build
+/// walks every term of the energy.
+std::size_t ImproveLabels(const EnergyInput& energy,
+                          std::span<const CellId> free,
+                          const TermIncidence& incidence,
+                          int max_passes,
                           std::vector<std::uint8_t>& labels);
 
 }  // namespace linesurf::solver
