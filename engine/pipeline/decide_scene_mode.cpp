@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -25,6 +26,10 @@ constexpr double kParallelSine = 1e-12;
 /// Growth of a plane's hit box, relative to its coordinates: far above the rounding of a hit
 /// point, so the box never drops a hit that the exact test would accept.
 constexpr double kHitBoxMargin = 1e-7;
+/// A plane with more inliers than this answers Surrounds through a hierarchy of its inliers'
+/// boxes: a city's ground, walked inlier by inlier for each downward ray until every direction
+/// was crossed, made the decision grow with the square of the city.
+constexpr std::size_t kIndexedInliers = 64;
 
 using Vec2 = Eigen::Vector2d;
 
@@ -67,6 +72,8 @@ struct PlaneOutline {
   std::vector<double> on_line_tolerance;  ///< gap_bridge x the inlier's length
   Vec2 min = Vec2::Constant(std::numeric_limits<double>::infinity());
   Vec2 max = Vec2::Constant(-std::numeric_limits<double>::infinity());
+  /// The inliers' boxes (Index), or null: the inliers are walked.
+  std::shared_ptr<const BoxBvh> index;
 
   [[nodiscard]] Vec2 Project(const Vec3& p) const {
     const Vec3 d = p - plane.point;
@@ -96,32 +103,78 @@ struct PlaneOutline {
     box.max.array() += kHitBoxMargin * scale;
     return box;
   }
-  /// `h` lies on an inlier, or each in-plane direction from `h` crosses some inlier.
+  /// Indexes the inliers (each box grown by its on-line tolerance and for rounding) when there
+  /// are more than kIndexedInliers.
+  void Index() {
+    if (from.size() <= kIndexedInliers) return;
+    const double slack = kHitBoxMargin * (min.cwiseAbs().cwiseMax(max.cwiseAbs()).maxCoeff() +
+                                          (max - min).maxCoeff());
+    std::vector<Box3> boxes(from.size());
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      if (!(Extent(i).squaredNorm() > 0.0)) continue;  // never met: an empty box
+      const double grow = on_line_tolerance[i] + slack;
+      const Vec2 lo = from[i].cwiseMin(to[i]).array() - grow;
+      const Vec2 hi = from[i].cwiseMax(to[i]).array() + grow;
+      boxes[i].Extend(Vec3(lo.x(), lo.y(), 0.0));
+      boxes[i].Extend(Vec3(hi.x(), hi.y(), 0.0));
+    }
+    index = std::make_shared<const BoxBvh>(boxes);
+  }
+
+  /// `h` lies on an inlier, or each in-plane direction from `h` crosses some inlier. The answer
+  /// does not depend on the order the inliers are tried in, so the hierarchy gives the walk's.
   [[nodiscard]] bool Surrounds(const Vec2& h,
                                const std::array<Vec2, kInPlaneDirections>& dirs) const {
     if (!((h.array() >= min.array()).all() && (h.array() <= max.array()).all())) return false;
+    if (index != nullptr) {
+      const Vec3 at(h.x(), h.y(), 0.0);
+      Box3 point;
+      point.Extend(at);
+      if (index->AnyOverlapping(point, [&](std::uint32_t i) { return OnInlier(i, h); })) {
+        return true;
+      }
+      return std::all_of(dirs.begin(), dirs.end(), [&](const Vec2& d) {
+        return index->AnyAlongRay(
+            at, Vec3(d.x(), d.y(), 0.0), [&](std::uint32_t i) { return Crosses(i, h, d); });
+      });
+    }
     std::array<bool, kInPlaneDirections> crossed{};
     std::size_t num_crossed = 0;
     for (std::size_t i = 0; i < from.size() && num_crossed < kInPlaneDirections; ++i) {
-      const Vec2 e = to[i] - from[i];
-      if (!(e.squaredNorm() > 0.0)) continue;  // seen end-on: no extent in the plane
-      const Vec2 ah = from[i] - h;
-      // On the lengthened inlier itself (within the bridged length of it): the ray meets a line.
-      const double along = std::clamp(-ah.dot(e) / e.squaredNorm(), 0.0, 1.0);
-      if ((ah + along * e).norm() <= on_line_tolerance[i]) return true;
+      if (OnInlier(i, h)) return true;
       for (std::size_t k = 0; k < kInPlaneDirections; ++k) {
-        if (crossed[k]) continue;
-        const double denom = Cross2(dirs[k], e);
-        if (std::abs(denom) <= kParallelSine * e.norm()) continue;  // no single crossing
-        const double t = Cross2(ah, e) / denom;                     // along the direction
-        const double s = Cross2(ah, dirs[k]) / denom;               // along the inlier
-        if (t > 0.0 && s >= 0.0 && s <= 1.0) {
+        if (!crossed[k] && Crosses(i, h, dirs[k])) {
           crossed[k] = true;
           ++num_crossed;
         }
       }
     }
     return num_crossed == kInPlaneDirections;
+  }
+
+ private:
+  [[nodiscard]] Vec2 Extent(std::size_t i) const { return to[i] - from[i]; }
+
+  /// `h` on the lengthened inlier i (within its bridged length): a ray through it meets a line.
+  /// An inlier seen end-on (no extent in the plane) is never met.
+  [[nodiscard]] bool OnInlier(std::size_t i, const Vec2& h) const {
+    const Vec2 e = Extent(i);
+    if (!(e.squaredNorm() > 0.0)) return false;
+    const Vec2 ah = from[i] - h;
+    const double along = std::clamp(-ah.dot(e) / e.squaredNorm(), 0.0, 1.0);
+    return (ah + along * e).norm() <= on_line_tolerance[i];
+  }
+
+  /// The in-plane ray from `h` along `d` crosses inlier i once.
+  [[nodiscard]] bool Crosses(std::size_t i, const Vec2& h, const Vec2& d) const {
+    const Vec2 e = Extent(i);
+    if (!(e.squaredNorm() > 0.0)) return false;
+    const double denom = Cross2(d, e);
+    if (std::abs(denom) <= kParallelSine * e.norm()) return false;  // no single crossing
+    const Vec2 ah = from[i] - h;
+    const double t = Cross2(ah, e) / denom;  // along the direction
+    const double s = Cross2(ah, d) / denom;  // along the inlier
+    return t > 0.0 && s >= 0.0 && s <= 1.0;
   }
 };
 
@@ -142,6 +195,7 @@ std::vector<PlaneOutline> Outlines(const Scene& scene, double gap_bridge) {
       outlines[m.planes[k].index()].Add(scene.segments[SegmentId(s)], gap_bridge);
     }
   }
+  for (PlaneOutline& o : outlines) o.Index();
   return outlines;
 }
 
