@@ -165,14 +165,13 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
                       kDegenerate,
                       kReconstructStage,
                       "no plane: nothing to reconstruct from");
+    const Box3 box = SceneBox(scene, options.box_margin);
     // The derived option bounds, before the complex (ComputeEvidence checks them again).
-    if (Status scale = CheckEnergyScale(scene, SceneBox(scene, options.box_margin), options.energy);
-        !scale) {
+    if (Status scale = CheckEnergyScale(scene, box, options.energy); !scale) {
       throw LinesurfException(scale.error());
     }
 
     timer.Start("complex");
-    const Box3 box = SceneBox(scene, options.box_margin);
     if (options.engine == Engine::kBlocks) {
       BlockPartitionOptions partition_options = options.blocks;
       partition_options.complex = options.complex;

@@ -11,7 +11,7 @@ namespace linesurf::pipeline {
 /// grows as if it were that thick, so that a flat scene still gets a box with room around it.
 /// The growth of an axis depends on the other axes only when it is that thin, so a city twice as
 /// wide gets no more empty air above it (docs/reconstruction.md, "Box"). `margin` > 0; a scene
-/// whose points all coincide gets a box of no size.
+/// whose points all coincide gets a box of no size, a scene without points an empty box.
 [[nodiscard]] Box3 SceneBox(const Scene& scene, double margin);
 
 }  // namespace linesurf::pipeline

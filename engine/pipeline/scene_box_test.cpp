@@ -42,5 +42,13 @@ TEST(SceneBox, AFlatSceneStillGetsRoom) {
   ExpectBox(SceneBox(scene, 0.05), {-10, -5, 1.9}, {210, 105, 2.1});
 }
 
+TEST(SceneBox, CoincidentPointsGetABoxOfNoSizeAndNoPointsAnEmptyBox) {
+  const Vec3 p(3, -2, 7);
+  const Box3 point = SceneBox(OneSegment(p, p, p), 0.05);
+  EXPECT_FALSE(point.IsEmpty());
+  ExpectBox(point, p, p);
+  EXPECT_TRUE(SceneBox(Scene{}, 0.05).IsEmpty());
+}
+
 }  // namespace
 }  // namespace linesurf::pipeline
