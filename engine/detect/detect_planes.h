@@ -116,8 +116,8 @@ struct PlaneDetectionOptions {
   /// A block whose midpoints number more than this is split into 8 halves, recursively, so that
   /// crowded places do not make one block's RANSAC the bottleneck (>= 0; 0 = never split). The
   /// count is of distinct lines (collinear parts merged). 2,000: a synthetic city has about one
-  /// plane per 15 lines, so a block of more lines would reach max_planes' 160 and run again as
-  /// its children, its RANSAC lost (docs/plane_detection.md).
+  /// plane per 15 lines, so a block of 2,400 lines or more reaches max_planes' 160 and runs again
+  /// as its children, its RANSAC lost (docs/plane_detection.md).
   std::int64_t block_max_segments = 2000;
   /// Seed of all random streams; same input + options + seed => same output, any thread count.
   std::uint64_t seed = 0;

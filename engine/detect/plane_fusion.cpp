@@ -176,12 +176,12 @@ double PairAngle(std::span<const Segment3> segments,
 
 /// The alive nodes' boxes in one hierarchy per class of normal (the axis of its largest
 /// component), so that a query skips the classes no normal within max_angle of its own can belong
-/// to, and the nodes added since the hierarchies were built, walked one by one. Normals are unit
-/// (RANSAC and FitPlane normalise them). A node that dies stays in its hierarchy until the dead
-/// and the added outnumber a quarter of what the hierarchies hold; then they are rebuilt from the
-/// alive nodes. Without the rebuild a merged plane's query met again every piece it had swallowed
-/// (a street's facade or a city's ground grows piece by piece), and every merged plane was walked
-/// for every merge: quadratic in the pieces.
+/// to, and the nodes added since the hierarchies were built, in a list with their boxes and
+/// classes. Normals are unit (RANSAC and FitPlane normalise them). A node that dies stays where
+/// it is until the deaths and additions since the last build outnumber a quarter of what the
+/// hierarchies hold (and 64); then they are rebuilt from the alive nodes. Before, every merge
+/// walked every merged plane so far, and a merged plane's query met again every piece it had
+/// swallowed (a street's facade or a city's ground grows piece by piece).
 class NearNodeIndex {
  public:
   explicit NearNodeIndex(double max_angle) : reach_(2.0 * (max_angle + kAngleSlack)) {}
@@ -205,9 +205,9 @@ class NearNodeIndex {
     stale_ = 0;
   }
 
-  /// Node `i` joins the walked list (it is found from the next query on).
-  void Add(std::size_t i) {
-    added_.push_back(i);
+  /// Node `i` joins the list (it is found from the next query on).
+  void Add(std::size_t i, const FusionNode& node) {
+    added_.push_back({i, node.box, ClassOf(node.data.plane.normal)});
     ++stale_;
   }
 
@@ -219,30 +219,44 @@ class NearNodeIndex {
     return stale_ > std::max(kMinStale, indexed_ / kStaleShareInverse);
   }
 
-  /// Calls fn(i) for every node i, dead ones included, whose box may overlap `box` (boundaries
+  /// Calls fn(i) for every node i, dead ones included, whose box overlaps `box` (boundaries
   /// included) and whose normal may lie within max_angle of `normal` (unit): the indexed ones,
-  /// class by class, then the added ones (all of them).
+  /// class by class, then the added ones.
   template <typename Fn>
   void ForEachNear(const Box3& box, const Vec3& normal, Fn&& fn) const {
     const Vec3 magnitude = normal.cwiseAbs();
+    // A unit normal n within angle a of +-normal m differs from it by at most a in every
+    // component; if n's largest component is c, then |m_c| >= |n_c| - a >= |n_k| - a >= |m_k| - 2a
+    // for every axis k.
+    const auto class_may_hold = [&](int c) {
+      return magnitude[c] >= magnitude.maxCoeff() - reach_;
+    };
     for (int c = 0; c < 3; ++c) {
-      // A unit normal n within angle a of +-normal m differs from it by at most a in every
-      // component; if n's largest component is c, then |m_c| >= |n_c| - a >= |n_k| - a >=
-      // |m_k| - 2a for every axis k.
-      if (magnitude[c] < magnitude.maxCoeff() - reach_) continue;
+      if (!class_may_hold(c)) continue;
       bvh_[c]->AnyOverlapping(box, [&](std::uint32_t k) {
         fn(members_[c][k]);
         return false;
       });
     }
-    for (const std::size_t i : added_) fn(i);
+    for (const Added& a : added_) {
+      if (class_may_hold(a.cls) && (box.min.array() <= a.box.max.array()).all() &&
+          (a.box.min.array() <= box.max.array()).all()) {
+        fn(a.node);
+      }
+    }
   }
 
  private:
-  /// Rebuild when the dead and added nodes outnumber a quarter of the indexed ones, and at
-  /// least 64 (a rebuild costs n log n; a query walks every added node).
+  /// Rebuild when the deaths and additions since the last build number more than a quarter of
+  /// the indexed nodes and more than 64 (a rebuild costs n log n; a query walks the added list).
   static constexpr std::size_t kMinStale = 64;
   static constexpr std::size_t kStaleShareInverse = 4;
+
+  struct Added {
+    std::size_t node;
+    Box3 box;
+    int cls;  ///< class of its normal
+  };
 
   static int ClassOf(const Vec3& normal) {
     int axis = 0;
@@ -253,7 +267,7 @@ class NearNodeIndex {
   double reach_;  ///< how far below the largest component a class's may lie: 2 (max_angle + slack)
   std::array<std::vector<std::size_t>, 3> members_;
   std::array<std::unique_ptr<BoxBvh>, 3> bvh_;
-  std::vector<std::size_t> added_;
+  std::vector<Added> added_;
   std::size_t indexed_ = 0;
   std::size_t stale_ = 0;
 };
@@ -327,7 +341,7 @@ int FusePlanes(std::span<const Segment3> segments,
       if (a >= 0.0) queue.emplace(a, k, fresh);
     };
     for_each_node_near(nodes[fresh], pair_with_fresh);
-    near_nodes.Add(fresh);
+    near_nodes.Add(fresh, nodes[fresh]);
     if (near_nodes.Stale()) near_nodes.Rebuild(nodes);
   }
   std::vector<FusionNode*> alive;

@@ -169,8 +169,8 @@ TEST(FusePlanes, ASegmentInSeveralPiecesOfAMergedPlaneCountsOnce) {
 
 TEST(FusePlanes, HundredsOfPiecesInARowMergeIntoTheirTwoPlanes) {
   // Two parallel rows of 300 touching pieces, on z = 0 and z = 1: 598 merges, enough for the
-  // index of near planes to be rebuilt many times (a merged plane must stay findable, and the
-  // pieces it swallowed must not come back).
+  // index of near planes to be rebuilt many times; a merged plane must stay findable, both in the
+  // list of added planes and after a rebuild.
   constexpr int kPieces = 300;
   std::vector<Segment3> segments;
   std::vector<SupportedPlane> planes;

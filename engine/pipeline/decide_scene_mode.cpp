@@ -30,6 +30,11 @@ constexpr double kHitBoxMargin = 1e-7;
 /// boxes: a city's ground, walked inlier by inlier for each downward ray until every direction
 /// was crossed, made the decision grow with the square of the city.
 constexpr std::size_t kIndexedInliers = 64;
+/// The hierarchy's boxes grow by this share of the plane's in-plane size, and its rays start that
+/// far behind their point: a crossing nearly parallel to the direction (sine down to
+/// kParallelSine) is computed up to about 7e-4 of that size away from where it is, and the exact
+/// test may accept it there.
+constexpr double kIndexReach = 2e-3;
 
 using Vec2 = Eigen::Vector2d;
 
@@ -74,6 +79,7 @@ struct PlaneOutline {
   Vec2 max = Vec2::Constant(-std::numeric_limits<double>::infinity());
   /// The inliers' boxes (Index), or null: the inliers are walked.
   std::shared_ptr<const BoxBvh> index;
+  double index_reach = 0.0;  ///< kIndexReach x the in-plane size (Index)
 
   [[nodiscard]] Vec2 Project(const Vec3& p) const {
     const Vec3 d = p - plane.point;
@@ -103,16 +109,16 @@ struct PlaneOutline {
     box.max.array() += kHitBoxMargin * scale;
     return box;
   }
-  /// Indexes the inliers (each box grown by its on-line tolerance and for rounding) when there
+  /// Indexes the inliers (each box grown by its on-line tolerance and by index_reach) when there
   /// are more than kIndexedInliers.
   void Index() {
     if (from.size() <= kIndexedInliers) return;
-    const double slack = kHitBoxMargin * (min.cwiseAbs().cwiseMax(max.cwiseAbs()).maxCoeff() +
-                                          (max - min).maxCoeff());
+    index_reach =
+        kIndexReach * (min.cwiseAbs().cwiseMax(max.cwiseAbs()).maxCoeff() + (max - min).maxCoeff());
     std::vector<Box3> boxes(from.size());
     for (std::size_t i = 0; i < from.size(); ++i) {
       if (!(Extent(i).squaredNorm() > 0.0)) continue;  // never met: an empty box
-      const double grow = on_line_tolerance[i] + slack;
+      const double grow = on_line_tolerance[i] + index_reach;
       const Vec2 lo = from[i].cwiseMin(to[i]).array() - grow;
       const Vec2 hi = from[i].cwiseMax(to[i]).array() + grow;
       boxes[i].Extend(Vec3(lo.x(), lo.y(), 0.0));
@@ -134,8 +140,10 @@ struct PlaneOutline {
         return true;
       }
       return std::all_of(dirs.begin(), dirs.end(), [&](const Vec2& d) {
-        return index->AnyAlongRay(
-            at, Vec3(d.x(), d.y(), 0.0), [&](std::uint32_t i) { return Crosses(i, h, d); });
+        const Vec3 direction(d.x(), d.y(), 0.0);
+        return index->AnyAlongRay(at - index_reach * direction, direction, [&](std::uint32_t i) {
+          return Crosses(i, h, d);
+        });
       });
     }
     std::array<bool, kInPlaneDirections> crossed{};

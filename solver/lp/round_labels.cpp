@@ -58,6 +58,7 @@ std::size_t ImproveLabels(const EnergyInput& energy,
                           int max_passes,
                           std::vector<std::uint8_t>& labels) {
   LINESURF_ASSERT(labels.size() == energy.NumCells());
+  LINESURF_ASSERT(free.empty() || incidence.Slot(free.back()) == free.size() - 1);
   std::size_t flips = 0;
   for (int pass = 0; pass < max_passes; ++pass) {
     std::size_t pass_flips = 0;
