@@ -41,12 +41,7 @@ class BoxBvh {
   /// the boxes and `box`, until fn returns true. Returns whether some fn(i) returned true.
   template <typename Fn>
   bool AnyOverlapping(const Box3& box, Fn&& fn) const {
-    return AnyMeeting(
-        [&](const Box3& b) {
-          return (box.min.array() <= b.max.array()).all() &&
-                 (b.min.array() <= box.max.array()).all();
-        },
-        fn);
+    return AnyMeeting([&](const Box3& b) { return box.Overlaps(b); }, fn);
   }
 
   /// Whether the ray {origin + t direction, t >= 0} meets `box` (boundary included).

@@ -43,6 +43,10 @@ struct Box3 {
   [[nodiscard]] bool Contains(const Vec3& p) const {
     return (p.array() >= min.array()).all() && (p.array() <= max.array()).all();
   }
+  /// Whether the two boxes share a point (boundaries included); an empty box meets none.
+  [[nodiscard]] bool Overlaps(const Box3& other) const {
+    return (min.array() <= other.max.array()).all() && (other.min.array() <= max.array()).all();
+  }
 };
 
 /// Whether the box of `center` and `half_extent` comes within `half_thickness` of the plane:

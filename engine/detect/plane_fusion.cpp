@@ -239,8 +239,7 @@ class NearNodeIndex {
       });
     }
     for (const Added& a : added_) {
-      if (class_may_hold(a.cls) && (box.min.array() <= a.box.max.array()).all() &&
-          (a.box.min.array() <= box.max.array()).all()) {
+      if (class_may_hold(a.cls) && box.Overlaps(a.box)) {
         fn(a.node);
       }
     }
