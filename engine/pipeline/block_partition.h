@@ -27,6 +27,12 @@ struct BlockPartitionOptions {
   /// Side of the base blocks (scene units, >= 0); 0 = automatic (`size_rule`).
   double block_size = 0.0;
   partition::BlockSizeRule size_rule;
+  /// With the automatic size: a block that more planes than this reach is cut in two along each
+  /// axis (a face through the whole slab), for at most `crowded_split_rounds` rounds, and never
+  /// below a quarter of the size (partition/voxel/crowded_blocks.h). 0 = never. A given size
+  /// is taken as it is.
+  std::size_t crowded_planes_per_block = 24;
+  std::int32_t crowded_split_rounds = 2;
   partition::PlaneSupportOptions support;
   partition::CellComplexOptions complex;
 
@@ -39,6 +45,8 @@ struct BlockPartitionStats {
   bool automatic_size = false;
   partition::BlockSizeChoice size_choice;  ///< when automatic
   Eigen::Vector3i dims{0, 0, 0};
+  std::size_t crowded_split_faces = 0;     ///< faces added to split crowded blocks
+  std::size_t crowded_blocks_left = 0;     ///< blocks still reached by more planes than the limit
   std::size_t planes_without_inliers = 0;  ///< planes no membership names: they split nothing
   double seconds_support = 0.0;
 };

@@ -105,6 +105,34 @@ TEST(BuildBlockPartition, AutomaticSizeOfASmallSceneIsOneBlock) {
   EXPECT_EQ(p.complexes.blocks[0].complex.vertex_points.raw(), mono->complex.vertex_points.raw());
 }
 
+// With a limit of 2 planes the cube's one automatic block is crowded: the first round cuts
+// it at the middle of the box, the second cuts the halves again, with the faces kept off the
+// cube's walls that lie on those middles. A given size is taken as it is.
+TEST(BuildBlockPartition, CrowdedAutomaticBlocksAreCutOffTheWalls) {
+  const Scene scene = CubeScene();
+  BlockPartitionOptions options;
+  options.crowded_planes_per_block = 2;
+  const BlockPartition p = Build(scene, options);
+  const Status ok = partition::ValidateBlockComplexes(p.complexes);
+  EXPECT_TRUE(ok) << ok.error().ToString();
+  EXPECT_EQ(p.stats.block_size, 4.0);
+  EXPECT_EQ(p.stats.crowded_split_faces, 3u + 6u);
+  EXPECT_EQ(p.stats.dims, Eigen::Vector3i(4, 4, 4));
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<double>& faces = p.complexes.grid.FaceTable(a);
+    EXPECT_EQ(faces[2], 1.0);
+    for (const double wall : {0.0, 2.0}) {
+      EXPECT_GE(std::abs(faces[wall == 0.0 ? 1 : 3] - wall), 1e-6 * 4.0);
+      EXPECT_LT(std::abs(faces[wall == 0.0 ? 1 : 3] - wall), 0.5);
+    }
+  }
+
+  options.block_size = 4.0;
+  const BlockPartition given = Build(scene, options);
+  EXPECT_EQ(given.stats.crowded_split_faces, 0u);
+  EXPECT_EQ(given.complexes.blocks.size(), 1u);
+}
+
 TEST(BuildBlockPartition, RejectsBadOptionsAndMissingInliers) {
   Scene scene = CubeScene();
   BlockPartitionOptions bad;
@@ -113,6 +141,11 @@ TEST(BuildBlockPartition, RejectsBadOptionsAndMissingInliers) {
   bad = {};
   bad.support.margin_blocks = 100;
   EXPECT_FALSE(BuildBlockPartition(scene, SceneBox(), bad, {}));
+  bad = {};
+  bad.crowded_split_rounds = -1;
+  const auto rounds = BuildBlockPartition(scene, SceneBox(), bad, {});
+  ASSERT_FALSE(rounds);
+  EXPECT_NE(rounds.error().message.find("crowded_split_rounds"), std::string::npos);
   scene.memberships.clear();
   const auto r = BuildBlockPartition(scene, SceneBox(), {}, {});
   ASSERT_FALSE(r);

@@ -183,6 +183,8 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       stats.block_size = prepared.blocks->stats.block_size;
       stats.blocks = bc.blocks.size();
       stats.seam_facets = bc.stats.seam_facets;
+      stats.crowded_split_faces = prepared.blocks->stats.crowded_split_faces;
+      stats.crowded_blocks = prepared.blocks->stats.crowded_blocks_left;
       for (const partition::BlockComplex& b : bc.blocks) {
         stats.cells += b.complex.NumCells();
         stats.facets += b.complex.NumFacets();

@@ -23,13 +23,7 @@ void CheckBlockSize(double block_size) {
                     "block_size must be a positive finite length, got " << block_size);
 }
 
-}  // namespace
-
-BlockGrid BlockGrid::Make(const Vec3& origin,
-                          double block_size,
-                          const Eigen::Vector3d& blocks,
-                          const Vec3* clip_max,
-                          const BlockGridOptions& options) {
+void CheckBlockCount(const Eigen::Vector3d& blocks, const BlockGridOptions& options) {
   LINESURF_THROW_IF(blocks.prod() > static_cast<double>(options.max_blocks),
                     kResourceExhausted,
                     kBlockGridStage,
@@ -40,6 +34,16 @@ BlockGrid BlockGrid::Make(const Vec3& origin,
                     kBlockGridStage,
                     "block grid of " << blocks.transpose() << " blocks exceeds "
                                      << kMaxBlocksPerAxis << " blocks along one axis");
+}
+
+}  // namespace
+
+BlockGrid BlockGrid::Make(const Vec3& origin,
+                          double block_size,
+                          const Eigen::Vector3d& blocks,
+                          const Vec3* clip_max,
+                          const BlockGridOptions& options) {
+  CheckBlockCount(blocks, options);
   BlockGrid grid;
   grid.block_size_ = block_size;
   grid.dims_ = blocks.cast<int>();
@@ -86,6 +90,29 @@ Expected<BlockGrid> BlockGrid::CreateWholeBlocks(const Vec3& origin,
                       kBlockGridStage,
                       "a grid needs a finite origin and at least one block per axis");
     return Make(origin, block_size, blocks.array().floor().matrix(), nullptr, options);
+  });
+}
+
+Expected<BlockGrid> BlockGrid::WithFaces(const std::array<std::vector<double>, 3>& faces,
+                                         const BlockGridOptions& options) const noexcept {
+  return CatchAll(kBlockGridStage, [&]() -> BlockGrid {
+    BlockGrid grid = *this;
+    for (int a = 0; a < 3; ++a) {
+      std::vector<double>& table = grid.faces_[a];
+      for (const double x : faces[a]) {
+        LINESURF_THROW_IF(
+            !(x > box_.min[a] && x < box_.max[a]),
+            kInvalidInput,
+            kBlockGridStage,
+            "added face " << x << " along axis " << a << " is not strictly inside the box");
+        table.push_back(x);
+      }
+      std::sort(table.begin(), table.end());
+      table.erase(std::unique(table.begin(), table.end()), table.end());
+      grid.dims_[a] = static_cast<int>(table.size()) - 1;
+    }
+    CheckBlockCount(grid.dims_.cast<double>(), options);
+    return grid;
   });
 }
 

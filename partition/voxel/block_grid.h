@@ -1,8 +1,9 @@
 #pragma once
 // The one block grid of the block engine (DESIGN section 3, docs/design/block_engine.md): a box
-// cut into base blocks of side `block_size` with integer coordinates, refined into octree
-// children where crowded. Every block-face coordinate comes from one function of (axis, level,
-// index) backed by one table per axis, so neighbouring blocks share their faces bit for bit.
+// cut into base blocks of side `block_size` with integer coordinates; the partition cuts crowded
+// slabs with added faces (WithFaces), detection refines crowded blocks into octree children.
+// Every block-face coordinate comes from one function of (axis, level, index) backed by one
+// table per axis, so neighbouring blocks share their faces bit for bit.
 
 #include "linesurf/error.h"
 
@@ -53,7 +54,17 @@ class BlockGrid {
       const Eigen::Vector3d& blocks,
       const BlockGridOptions& options = {}) noexcept;
 
+  /// This grid with the coordinates `faces[a]` added to the face table of each axis a: every
+  /// base block a new face crosses is cut in two, along the whole slab, so every face stays
+  /// shared by exactly two blocks (or one and the box). Coordinates must lie strictly inside the
+  /// box; those already in a table are ignored. block_size() keeps the nominal side. Errors:
+  /// kInvalidInput (a coordinate not finite or not inside the box), kResourceExhausted as
+  /// Create.
+  [[nodiscard]] Expected<BlockGrid> WithFaces(const std::array<std::vector<double>, 3>& faces,
+                                              const BlockGridOptions& options = {}) const noexcept;
+
   [[nodiscard]] const Box3& box() const { return box_; }
+  /// The side of the base blocks before WithFaces split some (the nominal side).
   [[nodiscard]] double block_size() const { return block_size_; }
   /// Base blocks along each axis.
   [[nodiscard]] const Eigen::Vector3i& dims() const { return dims_; }

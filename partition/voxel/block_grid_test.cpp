@@ -129,5 +129,35 @@ TEST(BlockGrid, RejectsBadSizesAndBoxes) {
   EXPECT_EQ(huge.error().code, ErrorCode::kResourceExhausted);
 }
 
+// A face added inside a slab cuts every block of that slab: the neighbours across it share it,
+// points locate on the right side, and the nominal size stays.
+TEST(BlockGrid, AddedFacesCutWholeSlabsAndAreShared) {
+  const BlockGrid base = MakeGrid(Box3{Vec3(0, 0, 0), Vec3(4, 3, 2)}, 1.0);
+  Expected<BlockGrid> cut = base.WithFaces({std::vector<double>{1.25, 3.0, 1.25}, {}, {0.5}});
+  ASSERT_TRUE(cut) << cut.error().ToString();
+  EXPECT_EQ(cut->dims(), Eigen::Vector3i(5, 3, 3));  // 3.0 is a face already; 1.25 comes once
+  EXPECT_EQ(cut->FaceTable(0), (std::vector<double>{0, 1, 1.25, 2, 3, 4}));
+  EXPECT_EQ(cut->FaceTable(2), (std::vector<double>{0, 0.5, 1, 2}));
+  EXPECT_EQ(cut->block_size(), 1.0);
+  EXPECT_EQ(cut->box().min, base.box().min);
+  EXPECT_EQ(cut->box().max, base.box().max);
+  EXPECT_EQ(cut->Locate(Vec3(1.2, 0.5, 0.4)), Eigen::Vector3i(1, 0, 0));
+  EXPECT_EQ(cut->Locate(Vec3(1.25, 0.5, 0.5)), Eigen::Vector3i(2, 0, 1));
+  const BlockKey lo{0, Eigen::Vector3i(1, 2, 0)};
+  const BlockKey hi{0, Eigen::Vector3i(2, 2, 0)};
+  EXPECT_EQ(cut->BlockBox(lo).max.x(), 1.25);
+  EXPECT_EQ(cut->BlockBox(hi).min.x(), 1.25);
+}
+
+TEST(BlockGrid, AddedFacesOutsideTheBoxAreRejected) {
+  const BlockGrid base = MakeGrid(Box3{Vec3(0, 0, 0), Vec3(4, 3, 2)}, 1.0);
+  for (const double x : {0.0, 2.0, -0.5, std::nan("")}) {
+    Expected<BlockGrid> cut = base.WithFaces({std::vector<double>{}, {}, {x}});
+    ASSERT_FALSE(cut) << x;
+    EXPECT_EQ(cut.error().code, ErrorCode::kInvalidInput);
+    EXPECT_NE(cut.error().message.find("axis 2"), std::string::npos) << cut.error().message;
+  }
+}
+
 }  // namespace
 }  // namespace linesurf::partition

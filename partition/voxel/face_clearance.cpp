@@ -39,8 +39,11 @@ std::pair<double, double> NarrowRange(const Plane3& plane,
   return {lo, hi};
 }
 
+}  // namespace
+
 /// Per axis, coordinate ranges that faces must keep off: sorted by their low end, with the
-/// running maximum of the high ends, so a face is tested in O(log n).
+/// running maximum of the high ends, so a face is tested in O(log n). (Outside the anonymous
+/// namespace: SplitFaceChooser holds two.)
 class AxisRanges {
  public:
   void Add(int axis, std::pair<double, double> range) { ranges_[axis].push_back(range); }
@@ -72,6 +75,8 @@ class AxisRanges {
   std::array<std::vector<std::pair<double, double>>, 3> ranges_;
   std::array<std::vector<double>, 3> max_hi_;
 };
+
+namespace {
 
 bool FacesClear(const Box3& box, double size, const AxisRanges& ranges, double margin) {
   for (int a = 0; a < 3; ++a) {
@@ -114,6 +119,19 @@ void AddInlierSlabs(std::span<const Segment3> segments,
   }
 }
 
+/// The ranges of the planes nearly parallel to each axis (coordinate varying by less than
+/// `width` over the box).
+AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, double width) {
+  AxisRanges ranges;
+  for (const Plane3& plane : planes) {
+    for (int a = 0; a < 3; ++a) {
+      const auto range = NarrowRange(plane, box, a, width);
+      if (range.first <= range.second) ranges.Add(a, range);
+    }
+  }
+  return ranges;
+}
+
 }  // namespace
 
 double SizeClearOfParallelPlanes(const Box3& box,
@@ -122,14 +140,7 @@ double SizeClearOfParallelPlanes(const Box3& box,
                                  std::span<const Segment3> segments,
                                  std::span<const std::vector<SegmentId>> inliers,
                                  double clearance) {
-  AxisRanges ranges;
-  const double width = clearance * size;
-  for (const Plane3& plane : planes) {
-    for (int a = 0; a < 3; ++a) {
-      const auto range = NarrowRange(plane, box, a, width);
-      if (range.first <= range.second) ranges.Add(a, range);
-    }
-  }
+  AxisRanges ranges = ParallelPlaneRanges(box, planes, clearance * size);
   if (!inliers.empty()) {
     AxisRanges with_slabs = ranges;
     AddInlierSlabs(segments, inliers, kSlabWidth * size, with_slabs);
@@ -138,6 +149,40 @@ double SizeClearOfParallelPlanes(const Box3& box,
   }
   ranges.Seal();
   return FirstClearSize(box, size, ranges, clearance).value_or(size);
+}
+
+struct SplitFaceChooser::Ranges {
+  AxisRanges planes;
+  AxisRanges planes_and_slabs;
+};
+
+SplitFaceChooser::SplitFaceChooser(const Box3& box,
+                                   double size,
+                                   std::span<const Plane3> planes,
+                                   std::span<const Segment3> segments,
+                                   std::span<const std::vector<SegmentId>> inliers,
+                                   double clearance)
+    : ranges_(std::make_unique<Ranges>()), margin_(clearance * size) {
+  ranges_->planes = ParallelPlaneRanges(box, planes, clearance * size);
+  ranges_->planes_and_slabs = ranges_->planes;
+  AddInlierSlabs(segments, inliers, kSlabWidth * size, ranges_->planes_and_slabs);
+  ranges_->planes.Seal();
+  ranges_->planes_and_slabs.Seal();
+}
+
+SplitFaceChooser::~SplitFaceChooser() = default;
+
+double SplitFaceChooser::Choose(int axis, double lo, double hi) const {
+  const double mid = 0.5 * (lo + hi);
+  const double step = (hi - lo) / (4.0 * kSteps);
+  for (const AxisRanges* ranges : {&ranges_->planes_and_slabs, &ranges_->planes}) {
+    for (int k = 0; k <= 2 * kSteps; ++k) {
+      const double offset = static_cast<double>((k + 1) / 2) * step;
+      const double x = k % 2 == 0 ? mid - offset : mid + offset;
+      if (!ranges->Near(axis, x, margin_)) return x;
+    }
+  }
+  return mid;
 }
 
 }  // namespace linesurf::partition

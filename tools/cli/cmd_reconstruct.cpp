@@ -55,6 +55,8 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
                  {"planes_in_complex", s.planes_in_complex},
                  {"blocks", s.blocks},
                  {"seam_facets", s.seam_facets},
+                 {"crowded_split_faces", s.crowded_split_faces},
+                 {"crowded_blocks", s.crowded_blocks},
                  {"cells", s.cells},
                  {"facets", s.facets},
                  {"edges", s.edges},

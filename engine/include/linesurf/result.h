@@ -94,6 +94,10 @@ struct ReconstructStats {
   double detection_block_size = 0.0;  ///< detection cube side (0 = the whole scene at once)
   std::size_t blocks = 0;       ///< base blocks (1 for monolithic)
   std::size_t seam_facets = 0;  ///< facets of the seam overlay (blocks engine)
+  /// Faces added to the automatic grid to cut blocks crowded with planes, and the blocks still
+  /// crowded after the last round (blocks engine).
+  std::size_t crowded_split_faces = 0;
+  std::size_t crowded_blocks = 0;
   std::size_t cells = 0;
   std::size_t facets = 0;
   std::size_t edges = 0;
