@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <initializer_list>
 #include <map>
 #include <tuple>
 #include <vector>
@@ -23,22 +24,26 @@ class BoxEdgesScene {
       const int d = (a + 2) % 3;
       for (int i = 0; i < 2; ++i) {
         for (int j = 0; j < 2; ++j) {
-          Vec3 p = lo;
-          p[b] = c[i][b];
-          p[d] = c[j][d];
-          for (int k = 0; k < pieces; ++k) {
-            Vec3 from = p;
-            Vec3 to = p;
-            from[a] = lo[a] + (hi[a] - lo[a]) * k / pieces;
-            to[a] = lo[a] + (hi[a] - lo[a]) * (k + 1) / pieces;
-            scene_.segments.push_back({from, to});
-            PlaneMembership m;
-            m.Add(PlaneOf(b, p[b]));
-            m.Add(PlaneOf(d, p[d]));
-            scene_.memberships.push_back(m);
-          }
+          Vec3 from = lo;
+          from[b] = c[i][b];
+          from[d] = c[j][d];
+          Vec3 to = from;
+          to[a] = hi[a];
+          AddLine(from, to, pieces, {b, d});
         }
       }
+    }
+  }
+  /// A line from `from` to `to` drawn in `pieces` equal segments, each an inlier of the planes
+  /// normal to `axes` through `from` (the line lies in them).
+  void AddLine(const Vec3& from, const Vec3& to, int pieces, std::initializer_list<int> axes) {
+    const Vec3 step = to - from;
+    for (int k = 0; k < pieces; ++k) {
+      scene_.segments.push_back({from + step * static_cast<double>(k) / pieces,
+                                 from + step * static_cast<double>(k + 1) / pieces});
+      PlaneMembership m;
+      for (const int axis : axes) m.Add(PlaneOf(axis, from[axis]));
+      scene_.memberships.push_back(m);
     }
   }
   Scene Seen(const std::vector<Vec3>& viewpoints) {
@@ -135,6 +140,25 @@ TEST(DecideSceneMode, WallsOfManyInliersDecideAsWallsOfFew) {
     no_open_ray.open_rays = 0;
     EXPECT_EQ(DecideSceneMode(scene, no_open_ray).enclosed_viewpoints, 0u) << pieces;
     EXPECT_EQ(DecideSceneMode(scene).enclosed_viewpoints, 3u) << pieces;
+  }
+}
+
+// The wall x = 6 without its vertical edge at y = 5 (as above), with a rail across it at the
+// viewpoints' height: each viewpoint's ray along +x meets the wall on the rail, at a point whose
+// +y direction crosses no inlier (those reaching past y = 5 run along y, like the rail), so it is
+// surrounded only because it lies on an inlier (without the rail such a ray stays open, as the
+// test above shows). A wall of 160 inliers asks its hierarchy whether the point lies on one; the
+// walk over 4 inliers gives the same answer.
+TEST(DecideSceneMode, ARayMeetingAWallOnAnInlierIsClosedWithFewOrManyInliers) {
+  for (const int pieces : {1, 40}) {
+    BoxEdgesScene boxes;
+    boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3), pieces);
+    boxes.AddLine(Vec3(6, 0, 1.5), Vec3(6, 5, 1.5), pieces, {0});
+    Scene scene = boxes.Seen({Vec3(3, 2.5, 1.5), Vec3(2, 2, 1.5), Vec3(4, 3, 1.5)});
+    ASSERT_EQ(DropVerticalEdgeFromWallX6(scene), static_cast<std::size_t>(pieces));
+    SceneModeOptions no_open_ray;
+    no_open_ray.open_rays = 0;
+    EXPECT_EQ(DecideSceneMode(scene, no_open_ray).enclosed_viewpoints, 3u) << pieces;
   }
 }
 
