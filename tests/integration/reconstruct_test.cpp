@@ -345,6 +345,21 @@ TEST(Reconstruct, BlockEngineGivesTheSameBytesForAnyThreadCount) {
       s.scene, o, [](const pipeline::ReconstructResult& r) { EXPECT_GT(r.stats.blocks, 1u); });
 }
 
+// Crowded blocks cut by faces through their slabs (here a block of more than 4 planes counts as
+// crowded): the cuts depend on the regions alone, so the bytes still do not depend on the
+// threads, and the house stays good.
+TEST(Reconstruct, BlockEngineWithCrowdedBlocksCutGivesTheSameBytesForAnyThreadCount) {
+  const synth::SyntheticScene s = Make("house");
+  pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
+  o.use_given_planes = false;
+  o.engine = pipeline::Engine::kBlocks;
+  o.blocks.crowded_planes_per_block = 4;
+  ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
+    EXPECT_GT(r.stats.crowded_split_faces, 0u);
+    ExpectGood(s, r);
+  });
+}
+
 // Issue 10 item 5: "auto" solves a large labelling per block, on the k-d blocks of the
 // monolithic complex and on the block engine's own blocks (here "large" is lowered to any size),
 // says so in the report, and gives the same bytes for any thread count.
