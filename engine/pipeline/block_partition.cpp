@@ -3,7 +3,9 @@
 #include "engine/core/exception.h"
 #include "partition/voxel/crowded_blocks.h"
 #include "partition/voxel/face_clearance.h"
+#include "partition/voxel/split_face_chooser.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -13,11 +15,13 @@ namespace linesurf::pipeline {
 namespace {
 
 constexpr char kBlockPartitionStage[] = "block_partition";
-/// Intervals shorter than this share of the block size are not split again: the blocks of the
-/// size rule's floor hold whole structures, and a quarter of one still holds parts of them.
-constexpr double kSmallestSplitShare = 0.5;
-/// Each round halves the crowded intervals; beyond a few the blocks hold pieces of segments.
-constexpr std::int32_t kMaxCrowdedSplitRounds = 4;
+/// Cuts stop before the grid holds more than this many times its uncut blocks: each face cuts
+/// a whole slab, so cuts spread over many slabs multiply the blocks (Andalusian: 224 -> 1,890).
+constexpr std::int64_t kMaxCutGrowth = 16;
+/// ... but a small grid may always reach this many blocks: one block cut 4 deep on every axis.
+constexpr std::int64_t kMinCutBudget = 4096;
+/// Beyond a few cuts a block holds pieces of segments rather than structures.
+constexpr std::int32_t kMaxCrowdedCutDepth = 4;
 
 /// Inlier segments of every plane, from the memberships (ascending).
 std::vector<std::vector<SegmentId>> InliersOf(const Scene& scene) {
@@ -47,11 +51,11 @@ Status ValidateBlockSize(double block_size) {
 Status BlockPartitionOptions::Validate() const {
   if (Status s = ValidateBlockSize(block_size); !s) return s;
   if (Status s = size_rule.Validate(); !s) return s;
-  if (crowded_split_rounds < 0 || crowded_split_rounds > kMaxCrowdedSplitRounds) {
+  if (crowded_cut_depth < 0 || crowded_cut_depth > kMaxCrowdedCutDepth) {
     return Error{ErrorCode::kInvalidOptions,
                  kBlockPartitionStage,
-                 "crowded_split_rounds must be in [0, " + std::to_string(kMaxCrowdedSplitRounds) +
-                     "], got " + std::to_string(crowded_split_rounds)};
+                 "crowded_cut_depth must be in [0, " + std::to_string(kMaxCrowdedCutDepth) +
+                     "], got " + std::to_string(crowded_cut_depth)};
   }
   if (Status s = support.Validate(); !s) return s;
   return complex.Validate();
@@ -90,17 +94,20 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
     if (stats.automatic_size && options.crowded_planes_per_block > 0) {
       const partition::SplitFaceChooser chooser(
           box, stats.block_size, scene.planes.raw(), scene.segments.raw(), inliers);
-      for (std::int32_t round = 0; round < options.crowded_split_rounds; ++round) {
-        const std::array<std::vector<double>, 3> faces =
-            partition::FacesSplittingCrowdedBlocks(grid,
-                                                   out.regions,
-                                                   options.crowded_planes_per_block,
-                                                   kSmallestSplitShare * stats.block_size,
-                                                   chooser);
-        const std::size_t added = faces[0].size() + faces[1].size() + faces[2].size();
+      partition::CutDepths depths = partition::UncutDepths(grid);
+      const std::int64_t max_blocks = std::max(kMaxCutGrowth * grid.NumBaseBlocks(), kMinCutBudget);
+      // Each round cuts intervals one deeper, so at most crowded_cut_depth rounds cut anything.
+      for (std::int32_t round = 0; round < options.crowded_cut_depth; ++round) {
+        const std::size_t added =
+            ValueOrThrow(partition::CutCrowdedBlocks(out.regions,
+                                                     options.crowded_planes_per_block,
+                                                     options.crowded_cut_depth,
+                                                     max_blocks,
+                                                     chooser,
+                                                     grid,
+                                                     depths));
         if (added == 0) break;
         stats.crowded_split_faces += added;
-        grid = ValueOrThrow(grid.WithFaces(faces));
         out.regions = support();
       }
       stats.crowded_blocks_left =

@@ -27,12 +27,14 @@ struct BlockPartitionOptions {
   /// Side of the base blocks (scene units, >= 0); 0 = automatic (`size_rule`).
   double block_size = 0.0;
   partition::BlockSizeRule size_rule;
-  /// With the automatic size: a block that more planes than this reach is cut in two along each
-  /// axis (a face through the whole slab), for at most `crowded_split_rounds` rounds, and never
-  /// below a quarter of the size (partition/voxel/crowded_blocks.h). 0 = never. A given size
-  /// is taken as it is.
+  /// With the automatic size, a block that more planes than this reach is cut in two along each
+  /// axis by a face through its whole slab (partition/voxel/crowded_blocks.h); 0 = never. A given
+  /// size is taken as it is. 24: four times the size rule's target mean (6), which Andalusian's
+  /// middle blocks (45 to 59 planes) exceed and no block of the synth cities does.
   std::size_t crowded_planes_per_block = 24;
-  std::int32_t crowded_split_rounds = 2;
+  /// How many times an interval of the grid may be cut, [0, 4]: 2 took Andalusian's crowded
+  /// blocks below the limit (1 left 6 of them).
+  std::int32_t crowded_cut_depth = 2;
   partition::PlaneSupportOptions support;
   partition::CellComplexOptions complex;
 

@@ -142,10 +142,10 @@ TEST(BuildBlockPartition, RejectsBadOptionsAndMissingInliers) {
   bad.support.margin_blocks = 100;
   EXPECT_FALSE(BuildBlockPartition(scene, SceneBox(), bad, {}));
   bad = {};
-  bad.crowded_split_rounds = -1;
+  bad.crowded_cut_depth = -1;
   const auto rounds = BuildBlockPartition(scene, SceneBox(), bad, {});
   ASSERT_FALSE(rounds);
-  EXPECT_NE(rounds.error().message.find("crowded_split_rounds"), std::string::npos);
+  EXPECT_NE(rounds.error().message.find("crowded_cut_depth"), std::string::npos);
   scene.memberships.clear();
   const auto r = BuildBlockPartition(scene, SceneBox(), {}, {});
   ASSERT_FALSE(r);

@@ -17,8 +17,9 @@
 
 namespace linesurf::partition {
 
-/// A block: `index` counts blocks of side block_size / 2^level from the grid's minimum corner.
-/// Level 0 are the base blocks.
+/// A block: `index` counts, from the grid's minimum corner, the blocks of level `level`, whose
+/// faces are the table entries (level 0, the base blocks) and their midpoints, level by level
+/// (side block_size / 2^level on a grid without added faces).
 struct BlockKey {
   std::int32_t level = 0;
   Eigen::Vector3i index = Eigen::Vector3i::Zero();

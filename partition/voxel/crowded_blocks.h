@@ -6,27 +6,37 @@
 // blocks and the complexes, seams, evidence and stitch need nothing new.
 
 #include "partition/voxel/block_grid.h"
-#include "partition/voxel/face_clearance.h"
 #include "partition/voxel/plane_support.h"
+#include "partition/voxel/split_face_chooser.h"
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace linesurf::partition {
+
+/// Per axis, how many cuts made each interval of the grid's face table (one entry per interval).
+using CutDepths = std::array<std::vector<std::int32_t>, 3>;
+
+/// The depths of a grid no cut has touched: all 0.
+[[nodiscard]] CutDepths UncutDepths(const BlockGrid& grid);
 
 /// Blocks of `regions` that more than `max_planes` planes reach.
 [[nodiscard]] std::size_t CountCrowdedBlocks(const PlaneSupportRegions& regions,
                                              std::size_t max_planes);
 
-/// Per axis, increasing: one face (placed by `chooser`) inside every interval of the grid's face
-/// table that holds a crowded block (more than `max_planes` planes) and is at least `min_length`
-/// long. Empty on every axis when no block is crowded.
-[[nodiscard]] std::array<std::vector<double>, 3> FacesSplittingCrowdedBlocks(
-    const BlockGrid& grid,
-    const PlaneSupportRegions& regions,
-    std::size_t max_planes,
-    double min_length,
-    const SplitFaceChooser& chooser);
+/// One round of cuts: a face (placed by `chooser`) inside every interval of each axis that holds
+/// a crowded block (more than `max_planes` planes) and was cut fewer than `max_depth` times, unless
+/// the grid would then hold more than `max_blocks` blocks. Updates `grid` and `depths` (both halves
+/// of a cut interval one deeper) and returns the faces added: 0 when nothing was cut.
+/// Errors: those of BlockGrid::WithFaces.
+[[nodiscard]] Expected<std::size_t> CutCrowdedBlocks(const PlaneSupportRegions& regions,
+                                                     std::size_t max_planes,
+                                                     std::int32_t max_depth,
+                                                     std::int64_t max_blocks,
+                                                     const SplitFaceChooser& chooser,
+                                                     BlockGrid& grid,
+                                                     CutDepths& depths) noexcept;
 
 }  // namespace linesurf::partition

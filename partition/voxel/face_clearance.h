@@ -9,7 +9,6 @@
 #include "engine/core/geometry.h"
 #include "engine/core/strong_id.h"
 
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -29,30 +28,5 @@ namespace linesurf::partition {
                                                std::span<const Segment3> segments = {},
                                                std::span<const std::vector<SegmentId>> inliers = {},
                                                double clearance = 1e-6);
-
-/// A face coordinate near the middle of [lo, hi] along `axis`, for splitting the blocks of that
-/// slab: the first of mid, mid + d, mid - d, mid + 2d, ... (d = (hi - lo) / 4096, at most a
-/// quarter of the interval either way) that keeps clearance * size off the planes nearly
-/// parallel to the axis and off the inlier slabs of the planes (as SizeClearOfParallelPlanes,
-/// with `size` the nominal block side); else the first that clears the planes alone; else mid.
-class SplitFaceChooser {
- public:
-  SplitFaceChooser(const Box3& box,
-                   double size,
-                   std::span<const Plane3> planes,
-                   std::span<const Segment3> segments,
-                   std::span<const std::vector<SegmentId>> inliers,
-                   double clearance = 1e-6);
-  ~SplitFaceChooser();
-  SplitFaceChooser(const SplitFaceChooser&) = delete;
-  SplitFaceChooser& operator=(const SplitFaceChooser&) = delete;
-
-  [[nodiscard]] double Choose(int axis, double lo, double hi) const;
-
- private:
-  struct Ranges;
-  std::unique_ptr<Ranges> ranges_;
-  double margin_ = 0.0;
-};
 
 }  // namespace linesurf::partition
