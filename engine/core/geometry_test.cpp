@@ -1,6 +1,10 @@
 #include "engine/core/geometry.h"
 
+#include "engine/core/endpoint_box.h"
+
 #include <gtest/gtest.h>
+
+#include <vector>
 
 namespace linesurf {
 namespace {
@@ -38,6 +42,17 @@ TEST(Box3, EmptyBoxOverlapsNothing) {
   EXPECT_FALSE(unit.Overlaps(Box3{}));
   EXPECT_FALSE(Box3{}.Overlaps(unit));
   EXPECT_FALSE(Box3{}.Overlaps(Box3{}));
+}
+
+TEST(EndpointBox, SpansTheEndpointsOfTheChosenSegmentsOnly) {
+  const std::vector<Segment3> segments = {{Vec3(0, 0, 0), Vec3(1, 2, 3)},
+                                          {Vec3(-5, -5, -5), Vec3(9, 9, 9)},
+                                          {Vec3(4, -1, 0.5), Vec3(2, 1, -2)}};
+  const std::vector<SegmentId> chosen = {SegmentId(0u), SegmentId(2u)};
+  const Box3 box = EndpointBox(segments, chosen);
+  EXPECT_EQ(box.min, Vec3(0, -1, -2));
+  EXPECT_EQ(box.max, Vec3(4, 2, 3));
+  EXPECT_TRUE(EndpointBox(segments, {}).IsEmpty());
 }
 
 }  // namespace

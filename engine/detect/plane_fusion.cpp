@@ -1,6 +1,7 @@
 #include "engine/detect/plane_fusion.h"
 
 #include "engine/core/box_bvh.h"
+#include "engine/core/endpoint_box.h"
 #include "engine/detect/segment_bvh.h"
 #include "engine/detect/segment_geometry.h"
 
@@ -62,15 +63,6 @@ struct FusionNode {
   bool alive = true;
   std::vector<std::shared_ptr<SupportPiece>> pieces;  ///< their union is data.inliers
 };
-
-Box3 InlierBox(std::span<const Segment3> segments, const std::vector<SegmentId>& inliers) {
-  Box3 box;
-  for (const SegmentId s : inliers) {
-    box.Extend(segments[s.index()].p1);
-    box.Extend(segments[s.index()].p2);
-  }
-  return box;
-}
 
 /// Largest per-axis gap between two boxes (0 when they overlap).
 double BoxGap(const Box3& a, const Box3& b) {
@@ -279,7 +271,7 @@ int FusePlanes(std::span<const Segment3> segments,
   std::vector<FusionNode> nodes;
   nodes.reserve(2 * planes.size());
   for (std::size_t i = 0; i < planes.size(); ++i) {
-    const Box3 box = InlierBox(segments, planes[i].inliers);
+    const Box3 box = EndpointBox(segments, planes[i].inliers);
     auto piece = std::make_shared<SupportPiece>(planes[i].inliers);
     nodes.push_back({std::move(planes[i]), box, i, true, {std::move(piece)}});
   }

@@ -1,5 +1,6 @@
 #include "engine/detect/plane_fusion.h"
 
+#include "engine/core/endpoint_box.h"
 #include "engine/core/rng.h"
 #include "engine/detect/segment_geometry.h"
 
@@ -203,14 +204,6 @@ TEST(FusePlanes, HundredsOfPiecesInARowMergeIntoTheirTwoPlanes) {
 }
 
 /// The box of the inliers' endpoints, which max_gap is measured between.
-Box3 EndpointBox(std::span<const Segment3> segments, const std::vector<SegmentId>& inliers) {
-  Box3 box;
-  for (const SegmentId s : inliers) {
-    for (const Vec3& p : {segments[s.index()].p1, segments[s.index()].p2}) box.Extend(p);
-  }
-  return box;
-}
-
 std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vector<SegmentId>& b) {
   std::vector<SegmentId> out;
   std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));

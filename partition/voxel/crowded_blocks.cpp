@@ -7,6 +7,10 @@ namespace {
 
 constexpr const char* kCrowdedBlocksStage = "crowded_blocks";
 
+bool IsCrowded(const PlaneSupportRegions& regions, std::size_t i, std::size_t max_planes) {
+  return regions.block_planes[BlockId(i)].size() > max_planes;
+}
+
 }  // namespace
 
 CutDepths UncutDepths(const BlockGrid& grid) {
@@ -18,7 +22,7 @@ CutDepths UncutDepths(const BlockGrid& grid) {
 std::size_t CountCrowdedBlocks(const PlaneSupportRegions& regions, std::size_t max_planes) {
   std::size_t crowded = 0;
   for (std::size_t i = 0; i < regions.blocks.size(); ++i) {
-    if (regions.block_planes[BlockId(i)].size() > max_planes) ++crowded;
+    if (IsCrowded(regions, i, max_planes)) ++crowded;
   }
   return crowded;
 }
@@ -40,7 +44,7 @@ Expected<std::size_t> CutCrowdedBlocks(const PlaneSupportRegions& regions,
     std::array<std::vector<bool>, 3> cut;
     for (int a = 0; a < 3; ++a) cut[a].assign(depths[a].size(), false);
     for (std::size_t i = 0; i < regions.blocks.size(); ++i) {
-      if (regions.block_planes[BlockId(i)].size() <= max_planes) continue;
+      if (!IsCrowded(regions, i, max_planes)) continue;
       const Eigen::Vector3i base = grid.BaseFromLinear(regions.blocks[i]);
       for (int a = 0; a < 3; ++a) {
         const auto k = static_cast<std::size_t>(base[a]);

@@ -1,5 +1,7 @@
 #include "partition/voxel/face_keep_off_ranges.h"
 
+#include "engine/core/endpoint_box.h"
+
 #include <cmath>
 
 namespace linesurf::partition::internal {
@@ -31,8 +33,6 @@ std::pair<double, double> NarrowRange(const Plane3& plane,
 
 }  // namespace
 
-/// The ranges of the planes nearly parallel to the faces of each axis (perpendicular to it: the
-/// plane's coordinate along the axis varies by less than `width` over the box).
 AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, double width) {
   AxisRanges ranges;
   for (const Plane3& plane : planes) {
@@ -44,18 +44,13 @@ AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, 
   return ranges;
 }
 
-/// Adds, per axis, the span of each plane's inlier endpoints when it is narrower than `width`.
 void AddInlierSlabs(std::span<const Segment3> segments,
                     std::span<const std::vector<SegmentId>> inliers,
                     double width,
                     AxisRanges& ranges) {
   for (const std::vector<SegmentId>& list : inliers) {
     if (list.empty()) continue;
-    Box3 span;
-    for (const SegmentId id : list) {
-      span.Extend(segments[id.index()].p1);
-      span.Extend(segments[id.index()].p2);
-    }
+    const Box3 span = EndpointBox(segments, list);
     for (int a = 0; a < 3; ++a) {
       if (span.max[a] - span.min[a] < width) ranges.Add(a, {span.min[a], span.max[a]});
     }
