@@ -2,6 +2,7 @@
 
 #include "engine/core/rng.h"
 #include "partition/arrangement/cell_geometry.h"
+#include "tests/support/thread_count.h"
 
 #include <gtest/gtest.h>
 
@@ -163,6 +164,7 @@ TEST(BuildBlockComplexes, PlanesOnFacesEdgesAndCornersOfBlocks) {
 }
 
 TEST(BuildBlockComplexes, SameComplexesForAnyThreadCount) {
+  const testing::RealThreadCounts real_threads;
   const Box3 box = Box3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
   const BlockGrid grid = MakeGrid(box, 0.5);
   const std::vector<Plane3> planes = RandomPlanes(12, box, 9);
@@ -174,7 +176,7 @@ TEST(BuildBlockComplexes, SameComplexesForAnyThreadCount) {
     }
   }
   const BlockComplexes one = Build(grid, planes, regions, 1);
-  for (const int threads : {2, 3, 8}) {
+  for (const int threads : testing::kThreadCounts) {
     const BlockComplexes other = Build(grid, planes, regions, threads);
     ASSERT_EQ(one.seams.size(), other.seams.size());
     for (std::size_t s = 0; s < one.seams.size(); ++s) {

@@ -3,6 +3,7 @@
 #include "engine/core/rng.h"
 #include "partition/voxel/active_blocks.h"
 #include "partition/voxel/polygon_blocks.h"
+#include "tests/support/thread_count.h"
 
 #include <gtest/gtest.h>
 
@@ -149,18 +150,23 @@ TEST(PlaneSupport, AFractionalMarginReachesTheBlocksWithinThatShareOfABlock) {
 }
 
 TEST(PlaneSupport, SameRegionsForAnyThreadCount) {
+  const testing::RealThreadCounts real_threads;
   const Fixture f;
   const BlockGrid grid = Grid(Vec3(20, 20, 20), 1.5);
   RunContext one;
   one.num_threads = 1;
-  RunContext two;
-  two.num_threads = 2;
   const auto a = ComputePlaneSupport(grid, f.segments, f.planes, f.inliers, {}, one);
-  const auto b = ComputePlaneSupport(grid, f.segments, f.planes, f.inliers, {}, two);
-  ASSERT_TRUE(a && b);
-  EXPECT_EQ(a->plane_blocks.items(), b->plane_blocks.items());
-  EXPECT_EQ(a->plane_blocks.offsets(), b->plane_blocks.offsets());
-  EXPECT_EQ(a->blocks, b->blocks);
+  ASSERT_TRUE(a);
+  for (const int threads : testing::kThreadCounts) {
+    SCOPED_TRACE(threads);
+    RunContext ctx;
+    ctx.num_threads = threads;
+    const auto b = ComputePlaneSupport(grid, f.segments, f.planes, f.inliers, {}, ctx);
+    ASSERT_TRUE(b);
+    EXPECT_EQ(a->plane_blocks.items(), b->plane_blocks.items());
+    EXPECT_EQ(a->plane_blocks.offsets(), b->plane_blocks.offsets());
+    EXPECT_EQ(a->blocks, b->blocks);
+  }
 }
 
 TEST(PlaneSupport, RejectsBadMarginsAndInliers) {
