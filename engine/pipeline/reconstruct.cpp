@@ -180,11 +180,27 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
       stats.planes_in_complex = scene.planes.size() - prepared.blocks->stats.planes_without_inliers;
       stats.engine = "blocks";
-      stats.block_size = prepared.blocks->stats.block_size;
+      const BlockPartitionStats& ps = prepared.blocks->stats;
+      stats.block_size = ps.block_size;
+      stats.block_size_automatic = ps.automatic_size;
+      if (ps.automatic_size) {
+        stats.mean_segments_per_block = ps.size_choice.mean_segments_per_block;
+        stats.mean_planes_per_block = ps.size_choice.mean_planes_per_block;
+        stats.block_size_at_floor = ps.size_choice.limited_by_length;
+      }
       stats.blocks = bc.blocks.size();
       stats.seam_facets = bc.stats.seam_facets;
-      stats.crowded_split_faces = prepared.blocks->stats.crowded_split_faces;
-      stats.crowded_blocks = prepared.blocks->stats.crowded_blocks_left;
+      stats.crowded_split_faces = ps.crowded_split_faces;
+      stats.crowded_blocks = ps.crowded_blocks_left;
+      if (ps.crowded_blocks_left > 0) {
+        std::ostringstream w;
+        w << ps.crowded_blocks_left << " blocks are still reached by more than "
+          << options.blocks.crowded_planes_per_block
+          << " planes after the crowded blocks were cut (cut depth or block budget reached): "
+             "their complexes take most of the time and memory; a smaller --block-size splits "
+             "them";
+        prepared.warnings.push_back(w.str());
+      }
       for (const partition::BlockComplex& b : bc.blocks) {
         stats.cells += b.complex.NumCells();
         stats.facets += b.complex.NumFacets();

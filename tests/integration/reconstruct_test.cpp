@@ -3,6 +3,7 @@
 #include "engine/pipeline/reconstruct.h"
 
 #include "engine/io/mesh_io.h"
+#include "tests/support/t_junctions.h"
 #include "tests/support/test_paths.h"
 #include "tests/support/thread_count.h"
 #include "tools/eval/evaluate_mesh.h"
@@ -73,6 +74,7 @@ void ExpectGood(const synth::SyntheticScene& s, const pipeline::ReconstructResul
   EXPECT_GE(e->precision[0], 0.90) << "precision at 5 cm";
   EXPECT_GE(e->completeness[0], 0.90) << "completeness at 5 cm (visible ground truth)";
   EXPECT_TRUE(e->topology.oriented);
+  EXPECT_FALSE(e->topology.self_intersecting);
   // Normals point from matter to empty space: a positive volume around a solid seen from
   // outside, a negative one around the empty room seen from inside.
   if (s.interior) {
@@ -213,26 +215,38 @@ TEST(Reconstruct, BlockEngineWithOneBlockGivesTheMonolithicMeshBytes) {
     o.blocks.block_size = 1000.0;
     const pipeline::ReconstructResult blocks = RunReconstruct(s.scene, o);
     EXPECT_EQ(blocks.stats.blocks, 1u);
+    EXPECT_FALSE(blocks.stats.block_size_automatic);  // given
     const std::string mono_bytes = MeshBytes(mono.mesh, dir / "mono.ply");
     ASSERT_GT(mono.mesh.NumFaces(), 0u);
     EXPECT_EQ(MeshBytes(blocks.mesh, dir / "blocks.ply"), mono_bytes);
   }
 }
 
-// Issue 10, must-show 2 (the tested part): many blocks, closed, 2-manifold, oriented, accurate.
-TEST(Reconstruct, BlockEngineWithManyBlocksIsClosedManifoldAndAccurate) {
-  for (const auto& [family, size, mode] : {std::tuple{"house", 0, pipeline::SceneMode::kExterior},
-                                           std::tuple{"lshape", 0, pipeline::SceneMode::kExterior},
-                                           std::tuple{"room", 0, pipeline::SceneMode::kInterior},
-                                           std::tuple{"city", 4, pipeline::SceneMode::kExterior}}) {
-    SCOPED_TRACE(family);
+// Issue 10, must-show 2 (the tested part): many blocks, on given and on detected planes, closed,
+// 2-manifold, oriented, conforming, not self-intersecting and accurate, on the six families.
+TEST(Reconstruct, BlockEngineWithManyBlocksIsClosedManifoldConformingAndAccurate) {
+  using Case = std::tuple<const char*, int, pipeline::SceneMode>;
+  for (const auto& [family, size, mode] : {Case{"house", 0, pipeline::SceneMode::kExterior},
+                                           Case{"lshape", 0, pipeline::SceneMode::kExterior},
+                                           Case{"room", 0, pipeline::SceneMode::kInterior},
+                                           Case{"floor", 0, pipeline::SceneMode::kInterior},
+                                           Case{"city", 4, pipeline::SceneMode::kExterior},
+                                           Case{"city", 16, pipeline::SceneMode::kExterior}}) {
     const synth::SyntheticScene s = Make(family, size);
-    pipeline::ReconstructOptions o = Options(mode);
-    o.engine = pipeline::Engine::kBlocks;
-    const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
-    EXPECT_GT(r.stats.blocks, 1u);
-    EXPECT_GT(r.stats.seam_facets, 0u);
-    ExpectGood(s, r);
+    for (const bool given_planes : {true, false}) {
+      SCOPED_TRACE(std::string(family) + " " + std::to_string(size) +
+                   (given_planes ? " given planes" : " detected planes"));
+      pipeline::ReconstructOptions o = Options(mode);
+      o.use_given_planes = given_planes;
+      o.engine = pipeline::Engine::kBlocks;
+      const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
+      EXPECT_GT(r.stats.blocks, 1u);
+      EXPECT_GT(r.stats.seam_facets, 0u);
+      EXPECT_TRUE(r.stats.block_size_automatic);
+      EXPECT_GT(r.stats.mean_segments_per_block, 0.0);
+      ExpectGood(s, r);
+      EXPECT_EQ(testing::CountTJunctions(r.mesh), 0u);
+    }
   }
 }
 
@@ -293,10 +307,19 @@ TEST(Reconstruct, MergeCoplanarGivesTheSameSurfaceInFewerFaces) {
   EXPECT_GT(non_convex, 0u) << "no merged face is non-convex: the test does not cover them";
 }
 
-bool HasOpenSeamWarning(const pipeline::ReconstructResult& r) {
-  return std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
-    return w.find("carry no detected plane") != std::string::npos;
+/// Whether a warning of `r` contains `text`.
+bool HasWarning(const pipeline::ReconstructResult& r, const std::string& text) {
+  return std::any_of(r.warnings.begin(), r.warnings.end(), [&text](const std::string& w) {
+    return w.find(text) != std::string::npos;
   });
+}
+
+bool HasOpenSeamWarning(const pipeline::ReconstructResult& r) {
+  return HasWarning(r, "carry no detected plane");
+}
+
+bool HasCrowdedBlocksWarning(const pipeline::ReconstructResult& r) {
+  return HasWarning(r, "after the crowded blocks were cut");
 }
 
 // Found in review: blocks of 3 m on the house gave a box of block faces without a roof (57.8 %
@@ -356,8 +379,25 @@ TEST(Reconstruct, BlockEngineWithCrowdedBlocksCutGivesTheSameBytesForAnyThreadCo
   o.blocks.crowded_planes_per_block = 4;
   ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
     EXPECT_GT(r.stats.crowded_split_faces, 0u);
+    EXPECT_EQ(HasCrowdedBlocksWarning(r), r.stats.crowded_blocks > 0);
     ExpectGood(s, r);
   });
+}
+
+// Crowded blocks left uncut (depth 0) are counted and warned about.
+TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
+  const synth::SyntheticScene s = Make("house");
+  pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
+  o.engine = pipeline::Engine::kBlocks;
+  const pipeline::ReconstructResult plain = RunReconstruct(s.scene, o);
+  EXPECT_EQ(plain.stats.crowded_blocks, 0u);
+  EXPECT_FALSE(HasCrowdedBlocksWarning(plain));
+  o.blocks.crowded_planes_per_block = 4;
+  o.blocks.crowded_cut_depth = 0;
+  const pipeline::ReconstructResult uncut = RunReconstruct(s.scene, o);
+  EXPECT_EQ(uncut.stats.crowded_split_faces, 0u);
+  EXPECT_GT(uncut.stats.crowded_blocks, 0u);
+  EXPECT_TRUE(HasCrowdedBlocksWarning(uncut));
 }
 
 // Issue 10 item 5: "auto" solves a large labelling per block, on the k-d blocks of the

@@ -71,6 +71,10 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
                  {"lp_nonzeros", s.lp_nonzeros}};
   j["engine"] = s.engine;
   j["block_size"] = s.block_size;
+  j["block_size_rule"] = {{"automatic", s.block_size_automatic},
+                          {"mean_segments_per_block", s.mean_segments_per_block},
+                          {"mean_planes_per_block", s.mean_planes_per_block},
+                          {"at_floor", s.block_size_at_floor}};
   j["detection_block_size"] = s.detection_block_size;
   j["scene_mode"] = s.scene_mode;
   j["scene_mode_reason"] = s.scene_mode_reason;

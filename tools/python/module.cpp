@@ -101,6 +101,17 @@ py::dict ReportOf(const ReconstructStats& stats) {
   report["segments_with_planes"] = py::make_tuple(
       stats.segments_with_planes[0], stats.segments_with_planes[1], stats.segments_with_planes[2]);
   LINESURF_REPORT(planes_in_complex);
+  LINESURF_REPORT(engine);
+  LINESURF_REPORT(block_size);
+  LINESURF_REPORT(block_size_automatic);
+  LINESURF_REPORT(mean_segments_per_block);
+  LINESURF_REPORT(mean_planes_per_block);
+  LINESURF_REPORT(block_size_at_floor);
+  LINESURF_REPORT(detection_block_size);
+  LINESURF_REPORT(blocks);
+  LINESURF_REPORT(seam_facets);
+  LINESURF_REPORT(crowded_split_faces);
+  LINESURF_REPORT(crowded_blocks);
   LINESURF_REPORT(cells);
   LINESURF_REPORT(facets);
   LINESURF_REPORT(edges);

@@ -91,6 +91,13 @@ struct ReconstructStats {
   std::size_t planes_in_complex = 0;                  ///< planes that split the box
   std::string engine;           ///< the cell complex: "monolithic" or "blocks"
   double block_size = 0.0;      ///< base block side (blocks engine; 0 for monolithic)
+  /// Whether the size rule chose block_size (blocks engine with block_size 0), and its figures
+  /// at that size: means over the occupied blocks, and whether a target was still missed at the
+  /// rule's floor of min_block_lengths median segment lengths (docs/design/block_engine.md 1).
+  bool block_size_automatic = false;
+  double mean_segments_per_block = 0.0;
+  double mean_planes_per_block = 0.0;
+  bool block_size_at_floor = false;
   double detection_block_size = 0.0;  ///< detection cube side (0 = the whole scene at once)
   std::size_t blocks = 0;       ///< base blocks (1 for monolithic)
   std::size_t seam_facets = 0;  ///< facets of the seam overlay (blocks engine)

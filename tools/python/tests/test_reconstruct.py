@@ -52,6 +52,16 @@ class ReconstructHouse(unittest.TestCase):
         self.assertEqual(report["labeling_method"], cli["solver"]["method"])
         self.assertEqual(report["lower_bound_source"], cli["solver"]["lower_bound_source"])
         self.assertEqual(report["capped_blocks"], cli["counts"]["capped_blocks"])
+        self.assertEqual(report["engine"], cli["engine"])
+        self.assertEqual(report["block_size"], cli["block_size"])
+        self.assertTrue(report["block_size_automatic"])
+        self.assertEqual(report["block_size_automatic"], cli["block_size_rule"]["automatic"])
+        self.assertEqual(report["mean_planes_per_block"],
+                         cli["block_size_rule"]["mean_planes_per_block"])
+        self.assertGreater(report["mean_segments_per_block"], 0.0)
+        self.assertEqual(report["blocks"], cli["counts"]["blocks"])
+        self.assertEqual(report["seam_facets"], cli["counts"]["seam_facets"])
+        self.assertEqual(report["crowded_blocks"], cli["counts"]["crowded_blocks"])
 
     def test_mesh_arrays_are_consistent_with_the_report(self):
         mesh, report = self.result.mesh, self.result.report
