@@ -203,7 +203,6 @@ TEST(FusePlanes, HundredsOfPiecesInARowMergeIntoTheirTwoPlanes) {
   }
 }
 
-/// The box of the inliers' endpoints, which max_gap is measured between.
 std::vector<SegmentId> UnionOf(const std::vector<SegmentId>& a, const std::vector<SegmentId>& b) {
   std::vector<SegmentId> out;
   std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));

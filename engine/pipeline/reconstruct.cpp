@@ -194,9 +194,9 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
       stats.crowded_blocks = ps.crowded_blocks_left;
       if (ps.crowded_blocks_left > 0) {
         std::ostringstream w;
-        w << ps.crowded_blocks_left << " blocks are still reached by more than "
+        w << ps.crowded_blocks_left << " block(s) still reached by more than "
           << options.blocks.crowded_planes_per_block
-          << " planes after the crowded blocks were cut (cut depth or block budget reached): "
+          << " planes when the crowded-block cuts stopped (cut depth or block budget reached): "
              "their complexes take most of the time and memory; a smaller --block-size splits "
              "them";
         prepared.warnings.push_back(w.str());

@@ -92,8 +92,10 @@ struct ReconstructStats {
   std::string engine;           ///< the cell complex: "monolithic" or "blocks"
   double block_size = 0.0;      ///< base block side (blocks engine; 0 for monolithic)
   /// Whether the size rule chose block_size (blocks engine with block_size 0), and its figures
-  /// at that size: means over the occupied blocks, and whether a target was still missed at the
-  /// rule's floor of min_block_lengths median segment lengths (docs/design/block_engine.md 1).
+  /// at the size it chose, before block_size was moved off planes parallel to the faces: means
+  /// over the occupied blocks, and whether a target was still missed at the rule's floor of
+  /// min_block_lengths median segment lengths (docs/design/block_engine.md 1). 0 / false when
+  /// the size is given.
   bool block_size_automatic = false;
   double mean_segments_per_block = 0.0;
   double mean_planes_per_block = 0.0;

@@ -59,6 +59,8 @@ class ReconstructHouse(unittest.TestCase):
         self.assertEqual(report["mean_planes_per_block"],
                          cli["block_size_rule"]["mean_planes_per_block"])
         self.assertGreater(report["mean_segments_per_block"], 0.0)
+        self.assertGreater(report["mean_planes_per_block"], 0.0)
+        self.assertEqual(report["block_size_at_floor"], cli["block_size_rule"]["at_floor"])
         self.assertEqual(report["blocks"], cli["counts"]["blocks"])
         self.assertEqual(report["seam_facets"], cli["counts"]["seam_facets"])
         self.assertEqual(report["crowded_blocks"], cli["counts"]["crowded_blocks"])
