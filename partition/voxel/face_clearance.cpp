@@ -44,15 +44,13 @@ double SizeClearOfParallelPlanes(const Box3& box,
                                  std::span<const Segment3> segments,
                                  std::span<const std::vector<SegmentId>> inliers,
                                  double clearance) {
-  AxisRanges ranges = internal::ParallelPlaneRanges(box, planes, clearance * size);
+  const internal::KeepOffRanges keep_off =
+      internal::BuildKeepOffRanges(box, size, planes, segments, inliers, clearance);
+  // Without inliers both sets are the planes': one search is enough.
   if (!inliers.empty()) {
-    AxisRanges with_slabs = ranges;
-    internal::AddInlierSlabs(segments, inliers, internal::kSlabWidth * size, with_slabs);
-    with_slabs.Seal();
-    if (const auto s = FirstClearSize(box, size, with_slabs, clearance)) return *s;
+    if (const auto s = FirstClearSize(box, size, keep_off.planes_and_slabs, clearance)) return *s;
   }
-  ranges.Seal();
-  return FirstClearSize(box, size, ranges, clearance).value_or(size);
+  return FirstClearSize(box, size, keep_off.planes, clearance).value_or(size);
 }
 
 }  // namespace linesurf::partition

@@ -7,6 +7,9 @@
 namespace linesurf::partition::internal {
 namespace {
 
+/// A plane's inliers form a slab along an axis when they span less than this many block sizes.
+constexpr double kSlabWidth = 0.1;
+
 // The range of the plane's coordinate along `axis` over the box, when that range is narrower
 // than `width`; empty (lo > hi) otherwise.
 std::pair<double, double> NarrowRange(const Plane3& plane,
@@ -31,8 +34,8 @@ std::pair<double, double> NarrowRange(const Plane3& plane,
   return {lo, hi};
 }
 
-}  // namespace
-
+/// The ranges of the planes nearly parallel to the faces of each axis (perpendicular to it: the
+/// plane's coordinate along the axis varies by less than `width` over the box).
 AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, double width) {
   AxisRanges ranges;
   for (const Plane3& plane : planes) {
@@ -44,6 +47,7 @@ AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, 
   return ranges;
 }
 
+/// Adds, per axis, the span of each plane's inlier endpoints when it is narrower than `width`.
 void AddInlierSlabs(std::span<const Segment3> segments,
                     std::span<const std::vector<SegmentId>> inliers,
                     double width,
@@ -55,6 +59,23 @@ void AddInlierSlabs(std::span<const Segment3> segments,
       if (span.max[a] - span.min[a] < width) ranges.Add(a, {span.min[a], span.max[a]});
     }
   }
+}
+
+}  // namespace
+
+KeepOffRanges BuildKeepOffRanges(const Box3& box,
+                                 double size,
+                                 std::span<const Plane3> planes,
+                                 std::span<const Segment3> segments,
+                                 std::span<const std::vector<SegmentId>> inliers,
+                                 double clearance) {
+  KeepOffRanges ranges;
+  ranges.planes = ParallelPlaneRanges(box, planes, clearance * size);
+  ranges.planes_and_slabs = ranges.planes;
+  AddInlierSlabs(segments, inliers, kSlabWidth * size, ranges.planes_and_slabs);
+  ranges.planes.Seal();
+  ranges.planes_and_slabs.Seal();
+  return ranges;
 }
 
 }  // namespace linesurf::partition::internal

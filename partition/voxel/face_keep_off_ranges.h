@@ -15,9 +15,6 @@
 
 namespace linesurf::partition::internal {
 
-/// A plane's inliers form a slab along an axis when they span less than this many block sizes.
-inline constexpr double kSlabWidth = 0.1;
-
 /// Per axis, coordinate ranges that faces must keep off: sorted by their low end, with the
 /// running maximum of the high ends, so a face is tested in O(log n).
 class AxisRanges {
@@ -52,14 +49,23 @@ class AxisRanges {
   std::array<std::vector<double>, 3> max_hi_;
 };
 
-/// The ranges of the planes nearly parallel to the faces of each axis (perpendicular to it: the
-/// plane's coordinate along the axis varies by less than `width` over the box).
-AxisRanges ParallelPlaneRanges(const Box3& box, std::span<const Plane3> planes, double width);
+/// What faces keep off, strictest first (both sealed). A face that cannot clear the first set
+/// clears the second.
+struct KeepOffRanges {
+  /// The planes nearly parallel to each axis' faces (the plane's coordinate along the axis varies
+  /// by less than clearance * size over the box), and the slab of every plane whose inliers'
+  /// endpoints span less than a tenth of `size` along the axis.
+  AxisRanges planes_and_slabs;
+  AxisRanges planes;  ///< the planes alone
+};
 
-/// Adds, per axis, the span of each plane's inlier endpoints when it is narrower than `width`.
-void AddInlierSlabs(std::span<const Segment3> segments,
-                    std::span<const std::vector<SegmentId>> inliers,
-                    double width,
-                    AxisRanges& ranges);
+/// The ranges for faces of blocks of side `size` in `box`; `inliers` holds one list per plane,
+/// of `segments` (none: no slabs).
+KeepOffRanges BuildKeepOffRanges(const Box3& box,
+                                 double size,
+                                 std::span<const Plane3> planes,
+                                 std::span<const Segment3> segments,
+                                 std::span<const std::vector<SegmentId>> inliers,
+                                 double clearance);
 
 }  // namespace linesurf::partition::internal

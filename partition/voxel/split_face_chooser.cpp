@@ -14,18 +14,13 @@ SplitFaceChooser::SplitFaceChooser(const Box3& box,
                                    std::span<const Segment3> segments,
                                    std::span<const std::vector<SegmentId>> inliers,
                                    double clearance)
-    : planes_(internal::ParallelPlaneRanges(box, planes, clearance * size)),
-      margin_(clearance * size) {
-  planes_and_slabs_ = planes_;
-  internal::AddInlierSlabs(segments, inliers, internal::kSlabWidth * size, planes_and_slabs_);
-  planes_.Seal();
-  planes_and_slabs_.Seal();
-}
+    : keep_off_(internal::BuildKeepOffRanges(box, size, planes, segments, inliers, clearance)),
+      margin_(clearance * size) {}
 
 double SplitFaceChooser::Choose(int axis, double lo, double hi) const {
   const double mid = 0.5 * (lo + hi);
   const double step = (hi - lo) / (4.0 * kCandidatesPerSide);
-  for (const internal::AxisRanges* ranges : {&planes_and_slabs_, &planes_}) {
+  for (const internal::AxisRanges* ranges : {&keep_off_.planes_and_slabs, &keep_off_.planes}) {
     for (int k = 0; k <= 2 * kCandidatesPerSide; ++k) {
       const double offset = static_cast<double>((k + 1) / 2) * step;
       const double x = k % 2 == 0 ? mid - offset : mid + offset;

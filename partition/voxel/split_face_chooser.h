@@ -31,8 +31,7 @@ class SplitFaceChooser {
   [[nodiscard]] double Choose(int axis, double lo, double hi) const;
 
  private:
-  internal::AxisRanges planes_;
-  internal::AxisRanges planes_and_slabs_;
+  internal::KeepOffRanges keep_off_;
   double margin_ = 0.0;
 };
 
