@@ -54,6 +54,35 @@ pipeline::DetectedScene Detect(Scene scene,
       std::move(scene), {}, api::ToEngineOptions(options.detection, options.seed), host.Context()));
 }
 
+/// Runs `write` (io::WriteCityJson or io::WriteCityJsonSeq) on the engine's mesh and planes.
+template <typename Write>
+Status WriteCityModel(const char* stage,
+                      const std::string& path,
+                      const Mesh& mesh,
+                      std::span<const Plane> planes,
+                      const CityJsonOptions& options,
+                      Write write) {
+  return CatchAll(stage, [&] {
+    const PolygonMesh engine_mesh = ValueOrThrowFor(ToPolygonMesh(mesh), path);
+    std::vector<Plane3> engine_planes;
+    engine_planes.reserve(planes.size());
+    for (const Plane& p : planes) {
+      engine_planes.push_back(Plane3{api::ToVec3(p.point), api::ToVec3(p.normal)});
+    }
+    ThrowIfInvalid(write(engine_mesh, engine_planes, options, path));
+  });
+}
+
+/// `classify` (an io path predicate) without letting std::filesystem's allocation escape.
+template <typename Classify>
+bool IsPathOf(const std::string& path, Classify classify) noexcept {
+  try {
+    return classify(path);
+  } catch (...) {
+    return false;
+  }
+}
+
 }  // namespace
 
 const char* LibraryVersion() noexcept { return LINESURF_VERSION_STRING; }
@@ -172,24 +201,32 @@ Status WriteVertexGroups(const std::string& path, const SceneData& scene) noexce
 
 Status WriteCityJson(const std::string& path,
                      const Mesh& mesh,
+                     std::span<const Plane> planes,
+                     const CityJsonOptions& options) noexcept {
+  return WriteCityModel("write_cityjson", path, mesh, planes, options,
+                        [](const auto&... args) { return io::WriteCityJson(args...); });
+}
+
+Status WriteCityJson(const std::string& path,
+                     const Mesh& mesh,
                      std::span<const Plane> planes) noexcept {
-  return CatchAll("write_cityjson", [&] {
-    const PolygonMesh engine_mesh = ValueOrThrowFor(ToPolygonMesh(mesh), path);
-    std::vector<Plane3> engine_planes;
-    engine_planes.reserve(planes.size());
-    for (const Plane& p : planes) {
-      engine_planes.push_back(Plane3{api::ToVec3(p.point), api::ToVec3(p.normal)});
-    }
-    ThrowIfInvalid(io::WriteCityJson(engine_mesh, engine_planes, path));
-  });
+  return WriteCityJson(path, mesh, planes, CityJsonOptions{});
+}
+
+Status WriteCityJsonSeq(const std::string& path,
+                        const Mesh& mesh,
+                        std::span<const Plane> planes,
+                        const CityJsonOptions& options) noexcept {
+  return WriteCityModel("write_cityjson", path, mesh, planes, options,
+                        [](const auto&... args) { return io::WriteCityJsonSeq(args...); });
 }
 
 bool IsCityJsonPath(const std::string& path) noexcept {
-  try {
-    return io::IsCityJsonPath(path);
-  } catch (...) {  // std::filesystem::path may allocate
-    return false;
-  }
+  return IsPathOf(path, [](const std::string& p) { return io::IsCityJsonPath(p); });
+}
+
+bool IsCityJsonSeqPath(const std::string& path) noexcept {
+  return IsPathOf(path, [](const std::string& p) { return io::IsCityJsonSeqPath(p); });
 }
 
 }  // namespace v1

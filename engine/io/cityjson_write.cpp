@@ -1,91 +1,89 @@
 #include "engine/io/cityjson_write.h"
 
-#include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
-#include "engine/core/vector_area.h"
+#include "engine/io/city_model.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/number_text.h"
 
-#include <Eigen/Geometry>
-
-#include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
-#include <map>
 #include <string>
-#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace linesurf::io {
 namespace {
 
 constexpr const char* kCityjsonWriteStage = "write_cityjson";
-/// A face is a wall when its normal is within this angle of horizontal.
-constexpr double kWallMaxTiltDeg = 10.0;
-/// A face lies on a plane when the normals agree within this angle and every vertex is within
-/// kOnPlaneRelative of the mesh's bounding-box diagonal (faces are cut from the planes exactly;
-/// only the rounding of the vertices to doubles separates them).
-constexpr double kSameNormalDeg = 0.5;
-constexpr double kOnPlaneRelative = 1e-7;
 /// Quantisation step of the vertices, relative to the largest extent (CityJSON stores integers).
 constexpr double kQuantumRelative = 1e-9;
 
-enum class SurfaceType { kRoof, kGround, kWall };
+using QuantisedPoint = std::array<long long, 3>;
 
-const char* SurfaceTypeName(SurfaceType type) {
-  switch (type) {
-    case SurfaceType::kRoof:
-      return "RoofSurface";
-    case SurfaceType::kGround:
-      return "GroundSurface";
-    case SurfaceType::kWall:
-      return "WallSurface";
+struct QuantisedPointHash {
+  std::size_t operator()(const QuantisedPoint& p) const {
+    std::size_t h = 0;
+    for (const long long c : p) h = h * 0x9E3779B97F4A7C15ull + std::hash<long long>{}(c);
+    return h;
   }
-  return "WallSurface";
-}
+};
 
-/// Newell's normal of a polygon (unit length; zero for a degenerate face).
-Vec3 FaceNormal(const PolygonMesh& mesh, std::span<const std::uint32_t> face) {
-  const Vec3 n = TwiceVectorArea(mesh.vertices, face);
-  const double length = n.norm();
-  return length > 0.0 ? Vec3(n / length) : Vec3(Vec3::Zero());
-}
+/// CityJSON's `transform`: x = translate + scale * integer.
+struct Quantisation {
+  Vec3 translate = Vec3::Zero();
+  double scale = 0.001;
 
-/// The plane `face` lies on (smallest largest vertex distance among those within tolerance),
-/// or -1.
-long long FacePlane(const PolygonMesh& mesh,
-                    std::span<const std::uint32_t> face,
-                    const Vec3& normal,
-                    std::span<const Plane3> planes,
-                    double tolerance) {
-  const double min_cos = std::cos(kSameNormalDeg * M_PI / 180.0);
-  long long best = -1;
-  double best_distance = tolerance;
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    if (std::abs(planes[p].normal.normalized().dot(normal)) < min_cos) continue;
-    double distance = 0.0;
-    for (const std::uint32_t v : face) {
-      distance = std::max(
-          distance, std::abs(planes[p].SignedDistance(mesh.vertices[v])) / planes[p].normal.norm());
-    }
-    if (distance <= best_distance) {
-      best_distance = distance;
-      best = static_cast<long long>(p);
-    }
+  explicit Quantisation(const Box3& box) {
+    if (box.IsEmpty()) return;
+    translate = box.min;
+    const double extent = box.Extent().maxCoeff();
+    if (extent > 0.0) scale = std::pow(10.0, std::floor(std::log10(extent * kQuantumRelative)));
   }
-  return best;
-}
+  [[nodiscard]] QuantisedPoint Of(const Vec3& p) const {
+    return {std::llround((p.x() - translate.x()) / scale),
+            std::llround((p.y() - translate.y()) / scale),
+            std::llround((p.z() - translate.z()) / scale)};
+  }
+};
 
-SurfaceType TypeOf(const Vec3& normal) {
-  if (std::abs(normal.z()) <= std::sin(kWallMaxTiltDeg * M_PI / 180.0)) return SurfaceType::kWall;
-  return normal.z() > 0.0 ? SurfaceType::kRoof : SurfaceType::kGround;
+/// Numbers the written vertices in order of first use; positions that quantise alike share one.
+class VertexNumbering {
+ public:
+  std::uint32_t Number(const QuantisedPoint& p) {
+    const auto [it, added] =
+        number_of_.try_emplace(p, static_cast<std::uint32_t>(points_.size()));
+    if (added) points_.push_back(p);
+    return it->second;
+  }
+  [[nodiscard]] const std::vector<QuantisedPoint>& points() const { return points_; }
+
+ private:
+  std::unordered_map<QuantisedPoint, std::uint32_t, QuantisedPointHash> number_of_;
+  std::vector<QuantisedPoint> points_;
+};
+
+/// metadata.referenceSystem for "EPSG:CODE" (case-insensitive prefix).
+std::string ReferenceSystemUrl(const std::string& crs) {
+  const std::string prefix = "epsg:";
+  bool valid = crs.size() > prefix.size();
+  for (std::size_t i = 0; valid && i < crs.size(); ++i) {
+    const auto c = static_cast<unsigned char>(crs[i]);
+    valid = i < prefix.size() ? std::tolower(c) == prefix[i] : std::isdigit(c) != 0;
+  }
+  LINESURF_THROW_IF(!valid,
+                    kInvalidOptions,
+                    kCityjsonWriteStage,
+                    "crs: '" << crs << "' is not EPSG:CODE (e.g. EPSG:7415)");
+  return "https://www.opengis.net/def/crs/EPSG/0/" + crs.substr(prefix.size());
 }
 
 void AppendDoubles(std::string& out, std::initializer_list<double> values) {
   out += '[';
   bool first = true;
   for (const double v : values) {
-    if (!first) out += ", ";
+    if (!first) out += ',';
     first = false;
     AppendDouble(out, v);
   }
@@ -94,170 +92,221 @@ void AppendDoubles(std::string& out, std::initializer_list<double> values) {
 
 void AppendSigned(std::string& out, long long value) {
   if (value < 0) out += '-';
-  AppendUnsigned(out, static_cast<unsigned long long>(value < 0 ? -value : value));
+  AppendUnsigned(out, value < 0 ? 0ull - static_cast<unsigned long long>(value)
+                                : static_cast<unsigned long long>(value));
 }
 
-std::string CityJsonText(const PolygonMesh& mesh,
-                         std::span<const Plane3> planes,
-                         const std::string& file) {
-  const std::size_t num_faces = mesh.NumFaces();
-  DisjointSets sets(mesh.vertices.size());
-  std::vector<bool> used(mesh.vertices.size(), false);
-  Box3 box;
-  for (std::size_t f = 0; f < num_faces; ++f) {
-    const auto face = mesh.Face(f);
-    LINESURF_THROW_IF(face.size() < 3,
-                      kInvalidInput,
-                      kCityjsonWriteStage,
-                      file << ": face " << f << " has " << face.size() << " vertices");
-    for (const std::uint32_t v : face) {
-      LINESURF_THROW_IF(v >= mesh.vertices.size(),
-                        kInvalidInput,
-                        kCityjsonWriteStage,
-                        file << ": face " << f << ": vertex " << v << " out of range ("
-                             << mesh.vertices.size() << " vertices)");
-      LINESURF_THROW_IF(!mesh.vertices[v].allFinite(),
-                        kInvalidInput,
-                        kCityjsonWriteStage,
-                        file << ": vertex " << v << " is not finite");
-      sets.Union(face[0], v);
-      used[v] = true;
-      box.Extend(mesh.vertices[v]);
-    }
-  }
-  // Components numbered by their first face; vertices renumbered in index order, used only.
-  std::map<std::size_t, std::size_t> component_of_root;
-  std::vector<std::size_t> component(num_faces);
-  for (std::size_t f = 0; f < num_faces; ++f) {
-    const std::size_t root = sets.Find(mesh.Face(f)[0]);
-    component[f] = component_of_root.try_emplace(root, component_of_root.size()).first->second;
-  }
-  std::vector<std::uint32_t> new_index(mesh.vertices.size(), 0);
-  std::uint32_t next = 0;
-  for (std::size_t v = 0; v < used.size(); ++v) {
-    if (used[v]) new_index[v] = next++;
-  }
-  const Vec3 translate = box.IsEmpty() ? Vec3(Vec3::Zero()) : box.min;
-  const double extent = box.IsEmpty() ? 0.0 : box.Extent().maxCoeff();
-  const double scale =
-      extent > 0.0 ? std::pow(10.0, std::floor(std::log10(extent * kQuantumRelative))) : 0.001;
-  const double tolerance = kOnPlaneRelative * (box.IsEmpty() ? 0.0 : box.Extent().norm());
-
-  // Per face: normal, plane, semantic type; per component: signed volume (about `translate`).
-  std::vector<Vec3> normals(num_faces);
-  std::vector<long long> face_plane(num_faces);
-  std::vector<double> volume(component_of_root.size(), 0.0);
-  for (std::size_t f = 0; f < num_faces; ++f) {
-    const auto face = mesh.Face(f);
-    normals[f] = FaceNormal(mesh, face);
-    face_plane[f] = FacePlane(mesh, face, normals[f], planes, tolerance);
-    const Vec3 a = mesh.vertices[face[0]] - translate;
-    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
-      volume[component[f]] +=
-          a.dot(
-              (mesh.vertices[face[i]] - translate).cross(mesh.vertices[face[i + 1]] - translate)) /
-          6.0;
-    }
-  }
-
-  std::string out = "{\n  \"type\": \"CityJSON\",\n  \"version\": \"1.1\",\n";
-  out += "  \"transform\": {\"scale\": ";
-  AppendDoubles(out, {scale, scale, scale});
-  out += ", \"translate\": ";
-  AppendDoubles(out, {translate.x(), translate.y(), translate.z()});
-  out += "},\n  \"metadata\": {\"geographicalExtent\": ";
+/// `"version", "transform", "metadata"` members of the document and of a sequence's header.
+std::string HeaderMembers(const CityModel& model,
+                          const Quantisation& quantisation,
+                          const CityJsonOptions& options) {
+  std::string out = "\"type\":\"CityJSON\",\"version\":\"2.0\",\"transform\":{\"scale\":";
+  const double s = quantisation.scale;
+  const Vec3& t = quantisation.translate;
+  AppendDoubles(out, {s, s, s});
+  out += ",\"translate\":";
+  AppendDoubles(out, {t.x(), t.y(), t.z()});
+  out += "},\"metadata\":{\"geographicalExtent\":";
+  const Box3& box = model.box;
   if (box.IsEmpty()) {
-    out += "[0.0, 0.0, 0.0, 0.0, 0.0, 0.0]";
+    out += "[0.0,0.0,0.0,0.0,0.0,0.0]";
   } else {
     AppendDoubles(out,
                   {box.min.x(), box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z()});
   }
-  out += "},\n  \"CityObjects\": {";
-  std::vector<std::vector<std::size_t>> faces_of(component_of_root.size());
-  for (std::size_t f = 0; f < num_faces; ++f) faces_of[component[f]].push_back(f);
-  for (std::size_t c = 0; c < faces_of.size(); ++c) {
-    const bool solid = volume[c] > 0.0;
-    // Semantic surfaces of this building: one per (plane, type), in first-face order.
-    std::map<std::pair<long long, SurfaceType>, std::size_t> surface_index;
-    std::vector<std::pair<long long, SurfaceType>> surfaces;
-    std::vector<std::size_t> face_surface;
-    for (const std::size_t f : faces_of[c]) {
-      const auto key = std::make_pair(face_plane[f], TypeOf(normals[f]));
-      const auto [it, added] = surface_index.try_emplace(key, surfaces.size());
-      if (added) surfaces.push_back(key);
-      face_surface.push_back(it->second);
-    }
-    out += c ? ",\n" : "\n";
-    out += "    \"building_";
-    AppendUnsigned(out, c);
-    out += "\": {\n      \"type\": \"Building\",\n      \"geometry\": [{\n        \"type\": \"";
-    out += solid ? "Solid" : "CompositeSurface";
-    out += "\",\n        \"lod\": \"2\",\n        \"boundaries\": ";
-    out += solid ? "[[" : "[";
-    for (std::size_t k = 0; k < faces_of[c].size(); ++k) {
-      out += k ? ", [[" : "[[";
-      const auto face = mesh.Face(faces_of[c][k]);
-      for (std::size_t i = 0; i < face.size(); ++i) {
-        if (i) out += ", ";
-        AppendUnsigned(out, new_index[face[i]]);
-      }
-      out += "]]";
-    }
-    out += solid ? "]],\n" : "],\n";
-    out += "        \"semantics\": {\n          \"surfaces\": [";
-    for (std::size_t s = 0; s < surfaces.size(); ++s) {
-      out += s ? ",\n            {\"type\": \"" : "\n            {\"type\": \"";
-      out += SurfaceTypeName(surfaces[s].second);
-      out += '"';
-      const long long p = surfaces[s].first;
-      if (p >= 0) {
-        const Plane3& plane = planes[static_cast<std::size_t>(p)];
-        const Vec3 n = plane.normal.normalized();
-        out += ", \"plane_index\": ";
-        AppendSigned(out, p);
-        out += ", \"plane\": ";
-        AppendDoubles(out, {n.x(), n.y(), n.z(), -n.dot(plane.point)});
-      }
-      out += '}';
-    }
-    out += "\n          ],\n          \"values\": ";
-    out += solid ? "[[" : "[";
-    for (std::size_t k = 0; k < face_surface.size(); ++k) {
-      if (k) out += ", ";
-      AppendUnsigned(out, face_surface[k]);
-    }
-    out += solid ? "]]\n" : "]\n";
-    out += "        }\n      }]\n    }";
+  if (!options.crs.empty()) {
+    out += ",\"referenceSystem\":\"" + ReferenceSystemUrl(options.crs) + '"';
   }
-  out += faces_of.empty() ? "},\n" : "\n  },\n";
-  out += "  \"vertices\": [";
+  out += '}';
+  return out;
+}
+
+/// A polygon's rings as written: quantised, repeated points dropped, collapsed holes dropped;
+/// empty when the outer ring collapses.
+std::vector<std::vector<QuantisedPoint>> QuantisedRings(const PolygonMesh& mesh,
+                                                        const PlanarPolygon& shape,
+                                                        const Quantisation& quantisation) {
+  std::vector<std::vector<QuantisedPoint>> rings;
+  for (const auto& ring : shape.rings) {
+    std::vector<QuantisedPoint> points;
+    for (const std::uint32_t v : ring) {
+      const QuantisedPoint p = quantisation.Of(mesh.vertices[v]);
+      if (points.empty() || points.back() != p) points.push_back(p);
+    }
+    while (points.size() > 1 && points.back() == points.front()) points.pop_back();
+    if (points.size() < 3) {
+      if (rings.empty()) return {};
+      continue;
+    }
+    rings.push_back(std::move(points));
+  }
+  return rings;
+}
+
+/// Appends `"id":{...}` for `building` on one line, its vertices numbered by `numbering`;
+/// appends nothing and returns false when every polygon collapses under quantisation.
+bool AppendBuilding(std::string& out,
+                    const PolygonMesh& mesh,
+                    const CityBuilding& building,
+                    std::span<const Plane3> planes,
+                    const Quantisation& quantisation,
+                    const std::string& id,
+                    VertexNumbering& numbering) {
+  std::string boundaries;
+  std::string values;
+  for (const CityPolygon& polygon : building.polygons) {
+    const auto rings = QuantisedRings(mesh, polygon.shape, quantisation);
+    if (rings.empty()) continue;
+    boundaries += boundaries.empty() ? "[" : ",[";
+    for (std::size_t r = 0; r < rings.size(); ++r) {
+      boundaries += r ? ",[" : "[";
+      for (std::size_t i = 0; i < rings[r].size(); ++i) {
+        if (i) boundaries += ',';
+        AppendUnsigned(boundaries, numbering.Number(rings[r][i]));
+      }
+      boundaries += ']';
+    }
+    boundaries += ']';
+    if (!values.empty()) values += ',';
+    AppendUnsigned(values, polygon.surface);
+  }
+  if (boundaries.empty()) return false;
+  const bool solid = building.solid;
+  out += '"' + id + "\":{\"type\":\"Building\",\"geometry\":[{\"type\":\"";
+  out += solid ? "Solid" : "CompositeSurface";
+  out += "\",\"lod\":\"2.2\",\"boundaries\":";
+  out += solid ? "[[" + boundaries + "]]" : "[" + boundaries + "]";
+  out += ",\"semantics\":{\"surfaces\":[";
+  for (std::size_t s = 0; s < building.surfaces.size(); ++s) {
+    if (s) out += ',';
+    out += "{\"type\":\"";
+    out += CityJsonName(building.surfaces[s].type);
+    out += '"';
+    if (const auto p = building.surfaces[s].plane) {
+      const Plane3& plane = planes[*p];
+      const Vec3 n = plane.normal.normalized();
+      out += ",\"plane_index\":";
+      AppendUnsigned(out, *p);
+      out += ",\"plane\":";
+      AppendDoubles(out, {n.x(), n.y(), n.z(), -n.dot(plane.point)});
+    }
+    out += '}';
+  }
+  out += "],\"values\":";
+  out += solid ? "[[" + values + "]]" : "[" + values + "]";
+  out += "}}]}";
+  return true;
+}
+
+/// `"vertices":[...]`, one vertex per line when `one_per_line`.
+void AppendVertices(std::string& out, const VertexNumbering& numbering, bool one_per_line) {
+  out += "\"vertices\":[";
   bool first = true;
-  for (std::size_t v = 0; v < used.size(); ++v) {
-    if (!used[v]) continue;
-    out += first ? "\n    [" : ",\n    [";
+  for (const QuantisedPoint& p : numbering.points()) {
+    if (!first) out += ',';
+    if (one_per_line) out += "\n";
     first = false;
+    out += '[';
     for (int k = 0; k < 3; ++k) {
-      if (k) out += ", ";
-      AppendSigned(out, std::llround((mesh.vertices[v][k] - translate[k]) / scale));
+      if (k) out += ',';
+      AppendSigned(out, p[k]);
     }
     out += ']';
   }
-  out += first ? "]\n}\n" : "\n  ]\n}\n";
+  if (one_per_line && !first) out += '\n';
+  out += ']';
+}
+
+std::string BuildingId(std::size_t b) { return "building_" + std::to_string(b); }
+
+std::string CityJsonText(const PolygonMesh& mesh,
+                         std::span<const Plane3> planes,
+                         const CityJsonOptions& options,
+                         const std::string& file) {
+  const CityModel model = BuildCityModel(mesh, planes, file);
+  const Quantisation quantisation(model.box);
+  std::string out = "{" + HeaderMembers(model, quantisation, options) + ",\n\"CityObjects\":{";
+  VertexNumbering numbering;
+  bool first = true;
+  for (std::size_t b = 0; b < model.buildings.size(); ++b) {
+    std::string object = first ? "\n" : ",\n";
+    if (!AppendBuilding(object, mesh, model.buildings[b], planes, quantisation, BuildingId(b),
+                        numbering)) {
+      continue;
+    }
+    out += object;
+    first = false;
+  }
+  out += first ? "},\n" : "\n},\n";
+  AppendVertices(out, numbering, /*one_per_line=*/true);
+  out += "}\n";
+  return out;
+}
+
+std::string CityJsonSeqText(const PolygonMesh& mesh,
+                            std::span<const Plane3> planes,
+                            const CityJsonOptions& options,
+                            const std::string& file) {
+  const CityModel model = BuildCityModel(mesh, planes, file);
+  const Quantisation quantisation(model.box);
+  std::string out =
+      "{" + HeaderMembers(model, quantisation, options) + ",\"CityObjects\":{},\"vertices\":[]}\n";
+  for (std::size_t b = 0; b < model.buildings.size(); ++b) {
+    const std::string id = BuildingId(b);
+    VertexNumbering numbering;
+    std::string feature = "{\"type\":\"CityJSONFeature\",\"id\":\"" + id + "\",\"CityObjects\":{";
+    if (!AppendBuilding(feature, mesh, model.buildings[b], planes, quantisation, id, numbering)) {
+      continue;
+    }
+    feature += "},";
+    AppendVertices(feature, numbering, /*one_per_line=*/false);
+    out += feature + "}\n";
+  }
   return out;
 }
 
 }  // namespace
+
+}  // namespace linesurf::io
+
+namespace linesurf {
+
+Status CityJsonOptions::Validate() const noexcept {
+  return CatchAll(io::kCityjsonWriteStage, [&] {
+    if (!crs.empty()) static_cast<void>(io::ReferenceSystemUrl(crs));
+  });
+}
+
+}  // namespace linesurf
+
+namespace linesurf::io {
 
 bool IsCityJsonPath(const std::filesystem::path& path) {
   if (LowerExtension(path) == ".cityjson") return true;
   return LowerExtension(path) == ".json" && LowerExtension(path.stem()) == ".city";
 }
 
+bool IsCityJsonSeqPath(const std::filesystem::path& path) {
+  return LowerExtension(path) == ".jsonl";
+}
+
 Status WriteCityJson(const PolygonMesh& mesh,
                      std::span<const Plane3> planes,
+                     const CityJsonOptions& options,
                      const std::filesystem::path& path) noexcept {
   return CatchAll(kCityjsonWriteStage, [&] {
-    WriteFileAtomically(path, CityJsonText(mesh, planes, path.string()), kCityjsonWriteStage);
+    WriteFileAtomically(
+        path, CityJsonText(mesh, planes, options, path.string()), kCityjsonWriteStage);
+  });
+}
+
+Status WriteCityJsonSeq(const PolygonMesh& mesh,
+                        std::span<const Plane3> planes,
+                        const CityJsonOptions& options,
+                        const std::filesystem::path& path) noexcept {
+  return CatchAll(kCityjsonWriteStage, [&] {
+    WriteFileAtomically(
+        path, CityJsonSeqText(mesh, planes, options, path.string()), kCityjsonWriteStage);
   });
 }
 

@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -33,11 +37,39 @@ nlohmann::json Read(const std::filesystem::path& path) {
   return nlohmann::json::parse(in);
 }
 
+std::vector<nlohmann::json> ReadLines(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<nlohmann::json> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+/// The dequantised vertex `v` of a CityJSON document (or of a feature, with the header's
+/// transform).
+Vec3 Vertex(const nlohmann::json& vertices, const nlohmann::json& transform, std::size_t v) {
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    p[k] = vertices[v][k].get<long long>() * transform["scale"][k].get<double>() +
+           transform["translate"][k].get<double>();
+  }
+  return p;
+}
+
+Status Write(const PolygonMesh& mesh,
+             std::span<const Plane3> planes,
+             const std::filesystem::path& path,
+             const CityJsonOptions& options = {}) {
+  return WriteCityJson(mesh, planes, options, path);
+}
+
 TEST(CityJson, ExtensionsSelectTheWriter) {
   EXPECT_TRUE(IsCityJsonPath("a/m.city.json"));
   EXPECT_TRUE(IsCityJsonPath("M.CityJSON"));
   EXPECT_FALSE(IsCityJsonPath("m.json"));
   EXPECT_FALSE(IsCityJsonPath("city.json.ply"));
+  EXPECT_TRUE(IsCityJsonSeqPath("a/m.city.jsonl"));
+  EXPECT_TRUE(IsCityJsonSeqPath("M.JSONL"));
+  EXPECT_FALSE(IsCityJsonSeqPath("m.city.json"));
 }
 
 TEST(CityJson, OneBuildingPerComponentWithPlaneSurfaces) {
@@ -49,30 +81,38 @@ TEST(CityJson, OneBuildingPerComponentWithPlaneSurfaces) {
   const std::vector<Plane3> planes = {{offset + Vec3(0, 0, 6), Vec3(0, 0, -1)},
                                       {offset + Vec3(10, 0, 0), Vec3(1, 0, 0)}};
   const auto dir = testing::FreshTempDir();
-  ASSERT_TRUE(WriteCityJson(mesh, planes, dir / "m.city.json"));
+  ASSERT_TRUE(Write(mesh, planes, dir / "m.city.json"));
   const nlohmann::json city = Read(dir / "m.city.json");
   EXPECT_EQ(city["type"], "CityJSON");
-  EXPECT_EQ(city["version"], "1.1");
+  EXPECT_EQ(city["version"], "2.0");
   ASSERT_EQ(city["CityObjects"].size(), 2u);
   ASSERT_EQ(city["vertices"].size(), 16u);
-  // Dequantised vertices are the mesh's within one quantum.
-  const auto& scale = city["transform"]["scale"];
-  const auto& translate = city["transform"]["translate"];
+  // Every mesh vertex is written once, within one quantum.
+  const double quantum = city["transform"]["scale"][0].get<double>();
   for (std::size_t v = 0; v < 16; ++v) {
-    for (int k = 0; k < 3; ++k) {
-      const double x = city["vertices"][v][k].get<long long>() * scale[k].get<double>() +
-                       translate[k].get<double>();
-      EXPECT_NEAR(x, mesh.vertices[v][k], scale[k].get<double>()) << v;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t w = 0; w < 16; ++w) {
+      nearest = std::min(nearest,
+                         (Vertex(city["vertices"], city["transform"], w) - mesh.vertices[v])
+                             .cwiseAbs()
+                             .maxCoeff());
     }
+    EXPECT_LE(nearest, quantum) << v;
   }
   const auto& first = city["CityObjects"]["building_0"];
   EXPECT_EQ(first["type"], "Building");
   const auto& geometry = first["geometry"][0];
   EXPECT_EQ(geometry["type"], "Solid");
-  EXPECT_EQ(geometry["lod"], "2");
+  EXPECT_EQ(geometry["lod"], "2.2");
   ASSERT_EQ(geometry["boundaries"].size(), 1u);     // one shell
   ASSERT_EQ(geometry["boundaries"][0].size(), 6u);  // six faces
-  EXPECT_EQ(geometry["boundaries"][0][1][0], nlohmann::json({4, 5, 7, 6}));
+  // The roof (z = 6): one ring of four vertices at z = offset + 6.
+  const auto& roof_ring = geometry["boundaries"][0][1][0];
+  ASSERT_EQ(roof_ring.size(), 4u);
+  for (const auto& v : roof_ring) {
+    EXPECT_NEAR(Vertex(city["vertices"], city["transform"], v.get<std::size_t>()).z(),
+                offset.z() + 6.0, quantum);
+  }
   // Face 1 is the roof on plane 0, face 5 the wall on plane 1: their surfaces carry the plane.
   const auto& semantics = geometry["semantics"];
   const auto& values = semantics["values"][0];
@@ -96,23 +136,131 @@ TEST(CityJson, InwardComponentIsACompositeSurface) {
   PolygonMesh mesh;
   AddBox(mesh, Vec3(0, 0, 0), Vec3(5, 4, 3), /*inward=*/true);
   const auto dir = testing::FreshTempDir();
-  ASSERT_TRUE(WriteCityJson(mesh, {}, dir / "room.cityjson"));
+  ASSERT_TRUE(Write(mesh, {}, dir / "room.cityjson"));
   const nlohmann::json city = Read(dir / "room.cityjson");
   const auto& geometry = city["CityObjects"]["building_0"]["geometry"][0];
   EXPECT_EQ(geometry["type"], "CompositeSurface");
   EXPECT_EQ(geometry["boundaries"].size(), 6u);
   EXPECT_EQ(geometry["semantics"]["values"].size(), 6u);
+  // Seen from inside: floor, ceiling and interior walls.
+  std::multiset<std::string> types;
+  for (const auto& v : geometry["semantics"]["values"]) {
+    types.insert(geometry["semantics"]["surfaces"][v.get<std::size_t>()]["type"]);
+  }
+  EXPECT_EQ(types.count("FloorSurface"), 1u);
+  EXPECT_EQ(types.count("CeilingSurface"), 1u);
+  EXPECT_EQ(types.count("InteriorWallSurface"), 4u);
+}
+
+/// A box [0,10] x [0,8] x [0,6] whose roof is four quads on plane z = 6 and whose ground is one
+/// quad; the walls pass through the roof's edge midpoints so that the shell stays closed.
+PolygonMesh BoxWithSplitRoof() {
+  PolygonMesh mesh;
+  // Bottom corners 0-3, top corners 4-7, top edge midpoints 8-11 (y=0, x=10, y=8, x=0),
+  // top centre 12.
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10, 8, 0), Vec3(0, 8, 0),
+                   Vec3(0, 0, 6), Vec3(10, 0, 6), Vec3(10, 8, 6), Vec3(0, 8, 6),
+                   Vec3(5, 0, 6), Vec3(10, 4, 6), Vec3(5, 8, 6), Vec3(0, 4, 6), Vec3(5, 4, 6)};
+  const std::vector<std::vector<std::uint32_t>> faces = {
+      {0, 3, 2, 1},                                   // ground
+      {4, 8, 12, 11}, {8, 5, 9, 12}, {12, 9, 6, 10}, {11, 12, 10, 7},  // roof quads
+      {0, 1, 5, 8, 4}, {1, 2, 6, 9, 5}, {2, 3, 7, 10, 6}, {3, 0, 4, 11, 7}};  // walls
+  for (const auto& f : faces) mesh.AddFace(f);
+  return mesh;
+}
+
+TEST(CityJson, FacesOfOnePlaneBecomeOnePolygon) {
+  const PolygonMesh mesh = BoxWithSplitRoof();
+  const std::vector<Plane3> planes = {{Vec3(0, 0, 6), Vec3(0, 0, 1)}};
+  const auto dir = testing::FreshTempDir();
+  ASSERT_TRUE(Write(mesh, planes, dir / "m.city.json"));
+  const nlohmann::json city = Read(dir / "m.city.json");
+  const auto& shell = city["CityObjects"]["building_0"]["geometry"][0]["boundaries"][0];
+  ASSERT_EQ(shell.size(), 6u);  // ground, one roof, four walls
+  // The roof drops its centre; its edge midpoints lie straight in the roof and in the walls,
+  // so every ring drops them.
+  EXPECT_EQ(shell[1][0].size(), 4u);
+  for (std::size_t p = 2; p < 6; ++p) EXPECT_EQ(shell[p][0].size(), 4u) << p;
+  EXPECT_EQ(city["vertices"].size(), 8u);
+  const auto& values = city["CityObjects"]["building_0"]["geometry"][0]["semantics"]["values"][0];
+  EXPECT_EQ(values.size(), 6u);
+}
+
+TEST(CityJson, SequenceHasAHeaderAndOneFeaturePerBuilding) {
+  PolygonMesh mesh;
+  const Vec3 offset(1.0e6, 2.0e6, 10.0);  // georeferenced, large coordinates
+  AddBox(mesh, offset, offset + Vec3(10, 8, 6));
+  AddBox(mesh, offset + Vec3(20, 0, 0), offset + Vec3(24, 4, 3));
+  const auto dir = testing::FreshTempDir();
+  CityJsonOptions options;
+  options.crs = "EPSG:7415";
+  ASSERT_TRUE(WriteCityJsonSeq(mesh, {}, options, dir / "m.city.jsonl"));
+  const auto lines = ReadLines(dir / "m.city.jsonl");
+  ASSERT_EQ(lines.size(), 3u);
+  const nlohmann::json& header = lines[0];
+  EXPECT_EQ(header["type"], "CityJSON");
+  EXPECT_EQ(header["version"], "2.0");
+  EXPECT_TRUE(header["CityObjects"].empty());
+  EXPECT_EQ(header["metadata"]["referenceSystem"],
+            "https://www.opengis.net/def/crs/EPSG/0/7415");
+  for (std::size_t b = 0; b < 2; ++b) {
+    const nlohmann::json& feature = lines[1 + b];
+    EXPECT_EQ(feature["type"], "CityJSONFeature");
+    const std::string id = "building_" + std::to_string(b);
+    EXPECT_EQ(feature["id"], id);
+    ASSERT_TRUE(feature["CityObjects"].contains(id));
+    // Each feature holds its own eight vertices, to the millimetre at 1e6 m.
+    ASSERT_EQ(feature["vertices"].size(), 8u);
+    for (std::size_t v = 0; v < 8; ++v) {
+      const Vec3 p = Vertex(feature["vertices"], header["transform"], v);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t w = 8 * b; w < 8 * b + 8; ++w) {
+        nearest = std::min(nearest, (p - mesh.vertices[w]).cwiseAbs().maxCoeff());
+      }
+      EXPECT_LT(nearest, 1e-3) << b << " " << v;
+    }
+  }
+}
+
+TEST(CityJson, ReferenceSystemMustBeAnEpsgCode) {
+  CityJsonOptions options;
+  options.crs = "EPSG:28992";
+  EXPECT_TRUE(options.Validate());
+  for (const char* bad : {"28992", "EPSG:", "EPSG:28992x", "WGS84"}) {
+    options.crs = bad;
+    const Status s = options.Validate();
+    ASSERT_FALSE(s) << bad;
+    EXPECT_EQ(s.error().code, ErrorCode::kInvalidOptions);
+    EXPECT_NE(s.error().message.find("crs"), std::string::npos);
+  }
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  const auto dir = testing::FreshTempDir();
+  EXPECT_FALSE(Write(mesh, {}, dir / "m.city.json", options));
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.city.json"));
+}
+
+TEST(CityJson, PositionsThatQuantiseAlikeAreWrittenOnce) {
+  // Two boxes touching along x = 1 with their own copies of the contact's four vertices.
+  PolygonMesh mesh;
+  AddBox(mesh, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  AddBox(mesh, Vec3(1, 0, 0), Vec3(2, 1, 1));
+  const auto dir = testing::FreshTempDir();
+  ASSERT_TRUE(Write(mesh, {}, dir / "m.city.json"));
+  const nlohmann::json city = Read(dir / "m.city.json");
+  EXPECT_EQ(city["CityObjects"].size(), 2u);
+  EXPECT_EQ(city["vertices"].size(), 12u);
 }
 
 TEST(CityJson, EmptyMeshAndBadFaces) {
   const auto dir = testing::FreshTempDir();
-  ASSERT_TRUE(WriteCityJson(PolygonMesh{}, {}, dir / "e.city.json"));
+  ASSERT_TRUE(Write(PolygonMesh{}, {}, dir / "e.city.json"));
   EXPECT_TRUE(Read(dir / "e.city.json")["CityObjects"].empty());
   PolygonMesh bad;
   bad.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   const std::uint32_t face[] = {0, 1, 5};
   bad.AddFace(face);
-  const Status s = WriteCityJson(bad, {}, dir / "b.city.json");
+  const Status s = Write(bad, {}, dir / "b.city.json");
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().message.find("face 0: vertex 5 out of range"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "b.city.json"));

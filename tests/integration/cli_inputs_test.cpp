@@ -201,7 +201,7 @@ TEST_F(CliInputs, ReconstructWritesCityJson) {
                              Quote(dir_ / "house.city.json"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json city = nlohmann::json::parse(Slurp(dir_ / "house.city.json"));
-  EXPECT_EQ(city["version"], "1.1");
+  EXPECT_EQ(city["version"], "2.0");
   ASSERT_EQ(city["CityObjects"].size(), 1u);  // the house is one connected part
   const auto& geometry = city["CityObjects"]["building_0"]["geometry"][0];
   EXPECT_EQ(geometry["type"], "Solid");
@@ -218,6 +218,17 @@ TEST_F(CliInputs, ReconstructWritesCityJson) {
                                   " --cityjson -o " + Quote(dir_ / "house.json"));
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(Slurp(dir_ / "house.json"), Slurp(dir_ / "house.city.json"));
+  // A .city.jsonl name writes CityJSONSeq: a header line and one feature line per building.
+  const CliRunResult sequence = Run("reconstruct " + Quote(dir_ / "house" / "lines.json") +
+                                    " -o " + Quote(dir_ / "house.city.jsonl"));
+  ASSERT_EQ(sequence.exit_code, 0) << sequence.err;
+  std::istringstream lines(Slurp(dir_ / "house.city.jsonl"));
+  std::vector<nlohmann::json> parsed;
+  for (std::string line; std::getline(lines, line);) parsed.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(parsed.size(), 2u);
+  EXPECT_EQ(parsed[0]["type"], "CityJSON");
+  EXPECT_EQ(parsed[1]["type"], "CityJSONFeature");
+  EXPECT_EQ(parsed[1]["CityObjects"]["building_0"], city["CityObjects"]["building_0"]);
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ struct ReconstructArgs {
   std::string report;
   bool ascii = false;
   bool cityjson = false;
+  CityJsonOptions city;
   ReconstructOptions options;
   std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
@@ -110,10 +111,13 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
+  if (Status s = args.city.Validate(); !s) return ReportError(s.error());
   OutputFiles files("reconstruct");
   args.source.AddInputsTo(files);
-  const bool cityjson = args.cityjson || IsCityJsonPath(args.output);
-  files.AddOutput("-o", args.output, cityjson ? std::vector<std::string>{} : kMeshExtensions);
+  const bool sequence = IsCityJsonSeqPath(args.output);
+  const bool cityjson = !sequence && (args.cityjson || IsCityJsonPath(args.output));
+  files.AddOutput("-o", args.output,
+                  cityjson || sequence ? std::vector<std::string>{} : kMeshExtensions);
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
   Expected<ReadSceneResult> read = ReadScene(args.source.input, args.source.Options());
@@ -137,8 +141,9 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   // The format follows the destination's name: the staged file keeps only its last extension.
   auto write_surface = [&](const std::filesystem::path& path) {
-    return cityjson ? WriteCityJson(path.string(), result->mesh, result->planes)
-                    : WriteMesh(path.string(), result->mesh, write);
+    if (sequence) return WriteCityJsonSeq(path.string(), result->mesh, result->planes, args.city);
+    if (cityjson) return WriteCityJson(path.string(), result->mesh, result->planes, args.city);
+    return WriteMesh(path.string(), result->mesh, write);
   };
   if (Status s = files.Write(args.output, write_surface); !s) return ReportError(s.error());
   if (!args.report.empty()) {
@@ -249,7 +254,10 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.Add("seed", o.seed, "Random seed");
   r.AddFlag("ascii", args->ascii, "ASCII PLY");
   r.AddFlag("cityjson", args->cityjson,
-            "Write CityJSON whatever the output extension (one Building per connected part)");
+            "Write CityJSON whatever the output extension (one Building per connected part; "
+            ".city.jsonl names write CityJSONSeq)");
+  r.Add("crs", args->city.crs,
+        "CityJSON: the coordinates' reference system, EPSG:CODE (metadata.referenceSystem)");
   r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
   r.AddFlag(
       "merge-coplanar",

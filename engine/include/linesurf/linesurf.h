@@ -131,16 +131,36 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteVertexGroups(const std::string& path,
                                                     const SceneData& scene) noexcept;
 
-/// @brief Writes a mesh as CityJSON 1.1: one Building per connected component, a semantic
-/// surface per plane of `planes` its faces lie on (docs/formats.md); the same bytes as
+/// @brief Writes a mesh as CityJSON 2.0: one Building per connected component, a Solid (LoD 2.2)
+/// whose surfaces are the component's faces joined per plane (holes as inner rings), a
+/// semantic surface per plane of `planes` and class (docs/formats.md); the same bytes as
 /// `linesurf reconstruct -o m.city.json`. Written to a temporary name and renamed.
-/// @return kInvalidInput (bad face, non-finite coordinate, unwritable path).
+/// @return kInvalidInput (bad face, non-finite coordinate, unwritable path), kInvalidOptions
+/// (options.crs not "EPSG:CODE").
+[[nodiscard]] LINESURF_API Status WriteCityJson(const std::string& path,
+                                                const Mesh& mesh,
+                                                std::span<const Plane> planes,
+                                                const CityJsonOptions& options) noexcept;
+
+/// WriteCityJson with default options (no CRS stated).
 [[nodiscard]] LINESURF_API Status WriteCityJson(const std::string& path,
                                                 const Mesh& mesh,
                                                 std::span<const Plane> planes) noexcept;
 
+/// @brief The buildings of WriteCityJson as CityJSONSeq (`.city.jsonl`: a CityJSON header line,
+/// then one CityJSONFeature per building and line); the same bytes as
+/// `linesurf reconstruct -o m.city.jsonl`. Written to a temporary name and renamed.
+/// @return as WriteCityJson.
+[[nodiscard]] LINESURF_API Status WriteCityJsonSeq(const std::string& path,
+                                                   const Mesh& mesh,
+                                                   std::span<const Plane> planes,
+                                                   const CityJsonOptions& options = {}) noexcept;
+
 /// True for a name ending in ".city.json" or ".cityjson" (case-insensitive): CityJSON by name.
 [[nodiscard]] LINESURF_API bool IsCityJsonPath(const std::string& path) noexcept;
+
+/// True for a name ending in ".jsonl" (case-insensitive, e.g. ".city.jsonl"): CityJSONSeq by name.
+[[nodiscard]] LINESURF_API bool IsCityJsonSeqPath(const std::string& path) noexcept;
 
 }  // namespace v1
 }  // namespace linesurf

@@ -232,6 +232,15 @@ struct MeshWriteOptions {
   bool triangulate = false;
 };
 
+/// Options of WriteCityJson and WriteCityJsonSeq.
+struct CityJsonOptions {
+  /// Coordinate reference system of the mesh's coordinates, "EPSG:CODE" (e.g. "EPSG:7415"),
+  /// written as metadata.referenceSystem; empty: no CRS stated.
+  std::string crs;
+
+  [[nodiscard]] LINESURF_API Status Validate() const noexcept;
+};
+
 /// "detect" / "given" ("" for a value outside the enum).
 [[nodiscard]] inline const char* PlaneSourceName(PlaneSource source) noexcept {
   switch (source) {

@@ -1,0 +1,229 @@
+#include "engine/io/city_model.h"
+
+#include "engine/core/disjoint_sets.h"
+#include "engine/core/exception.h"
+#include "engine/core/vector_area.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+namespace linesurf::io {
+namespace {
+
+constexpr const char* kCityModelStage = "write_cityjson";
+constexpr double kWallMaxTiltDeg = 10.0;
+/// Faces are cut from the planes exactly; only the rounding of their vertices to doubles
+/// separates them from their plane.
+constexpr double kSameNormalDeg = 0.5;
+constexpr double kOnPlaneRelative = 1e-7;
+
+/// Newell's normal of a polygon (unit length; zero for a degenerate face).
+Vec3 FaceNormal(const PolygonMesh& mesh, std::span<const std::uint32_t> face) {
+  const Vec3 n = TwiceVectorArea(mesh.vertices, face);
+  const double length = n.norm();
+  return length > 0.0 ? Vec3(n / length) : Vec3(Vec3::Zero());
+}
+
+/// The plane `face` lies on (smallest largest vertex distance among those within tolerance).
+std::optional<std::size_t> FacePlane(const PolygonMesh& mesh,
+                                     std::span<const std::uint32_t> face,
+                                     const Vec3& normal,
+                                     std::span<const Plane3> planes,
+                                     double tolerance) {
+  const double min_cos = std::cos(kSameNormalDeg * M_PI / 180.0);
+  std::optional<std::size_t> best;
+  double best_distance = tolerance;
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (std::abs(planes[p].normal.normalized().dot(normal)) < min_cos) continue;
+    double distance = 0.0;
+    for (const std::uint32_t v : face) {
+      distance = std::max(
+          distance, std::abs(planes[p].SignedDistance(mesh.vertices[v])) / planes[p].normal.norm());
+    }
+    if (distance <= best_distance) {
+      best_distance = distance;
+      best = p;
+    }
+  }
+  return best;
+}
+
+SurfaceClass ClassOf(const Vec3& normal, bool solid) {
+  const bool wall = std::abs(normal.z()) <= std::sin(kWallMaxTiltDeg * M_PI / 180.0);
+  if (solid) {
+    if (wall) return SurfaceClass::kWall;
+    return normal.z() > 0.0 ? SurfaceClass::kRoof : SurfaceClass::kGround;
+  }
+  // Seen from inside, a face's normal points into the room.
+  if (wall) return SurfaceClass::kInteriorWall;
+  return normal.z() > 0.0 ? SurfaceClass::kFloor : SurfaceClass::kCeiling;
+}
+
+void CheckFaces(const PolygonMesh& mesh, const std::string& file) {
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    const auto face = mesh.Face(f);
+    LINESURF_THROW_IF(face.size() < 3,
+                      kInvalidInput,
+                      kCityModelStage,
+                      file << ": face " << f << " has " << face.size() << " vertices");
+    for (const std::uint32_t v : face) {
+      LINESURF_THROW_IF(v >= mesh.vertices.size(),
+                        kInvalidInput,
+                        kCityModelStage,
+                        file << ": face " << f << ": vertex " << v << " out of range ("
+                             << mesh.vertices.size() << " vertices)");
+      LINESURF_THROW_IF(!mesh.vertices[v].allFinite(),
+                        kInvalidInput,
+                        kCityModelStage,
+                        file << ": vertex " << v << " is not finite");
+    }
+  }
+}
+
+/// The faces of each connected part (faces sharing vertices), parts in first-face order.
+std::vector<std::vector<std::uint32_t>> FacesOfParts(const PolygonMesh& mesh) {
+  DisjointSets sets(mesh.vertices.size());
+  for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
+    for (const std::uint32_t v : mesh.Face(f)) sets.Union(mesh.Face(f)[0], v);
+  }
+  std::map<std::size_t, std::size_t> part_of_root;
+  std::vector<std::vector<std::uint32_t>> faces_of;
+  for (std::uint32_t f = 0; f < mesh.NumFaces(); ++f) {
+    const auto [it, added] = part_of_root.try_emplace(sets.Find(mesh.Face(f)[0]), faces_of.size());
+    if (added) faces_of.emplace_back();
+    faces_of[it->second].push_back(f);
+  }
+  return faces_of;
+}
+
+/// Six times the signed volume the faces enclose, about `origin` (for precision).
+double SixVolume(const PolygonMesh& mesh, std::span<const std::uint32_t> faces,
+                 const Vec3& origin) {
+  double sum = 0.0;
+  for (const std::uint32_t f : faces) {
+    const auto face = mesh.Face(f);
+    const Vec3 a = mesh.vertices[face[0]] - origin;
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+      sum += a.dot((mesh.vertices[face[i]] - origin).cross(mesh.vertices[face[i + 1]] - origin));
+    }
+  }
+  return sum;
+}
+
+CityBuilding BuildBuilding(const PolygonMesh& mesh,
+                           std::span<const std::uint32_t> faces,
+                           std::span<const Plane3> planes,
+                           const Box3& box) {
+  CityBuilding building;
+  building.solid = SixVolume(mesh, faces, box.min) > 0.0;
+  const double tolerance = kOnPlaneRelative * box.Extent().norm();
+  // Faces joined per (plane, class, side of the plane); a face on no plane is a group alone.
+  using GroupKey = std::tuple<std::size_t, SurfaceClass, bool>;
+  std::map<GroupKey, std::size_t> group_of_key;
+  std::vector<std::vector<std::uint32_t>> groups;
+  std::vector<CitySurface> group_surface;
+  std::vector<Vec3> group_normal;
+  for (const std::uint32_t f : faces) {
+    const Vec3 normal = FaceNormal(mesh, mesh.Face(f));
+    const std::optional<std::size_t> plane =
+        FacePlane(mesh, mesh.Face(f), normal, planes, tolerance);
+    const CitySurface surface{plane, ClassOf(normal, building.solid)};
+    std::size_t group = groups.size();
+    if (plane) {
+      const bool side = planes[*plane].normal.dot(normal) > 0.0;
+      group = group_of_key.try_emplace({*plane, surface.type, side}, groups.size()).first->second;
+    }
+    if (group == groups.size()) {
+      groups.emplace_back();
+      group_surface.push_back(surface);
+      group_normal.push_back(plane ? Vec3(planes[*plane].normal.normalized()) : normal);
+      if (plane && group_normal.back().dot(normal) < 0.0) group_normal.back() *= -1.0;
+    }
+    groups[group].push_back(f);
+  }
+  std::map<std::pair<std::optional<std::size_t>, SurfaceClass>, std::size_t> surface_of_key;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const CitySurface& surface = group_surface[g];
+    const auto [it, added] =
+        surface_of_key.try_emplace({surface.plane, surface.type}, building.surfaces.size());
+    if (added) building.surfaces.push_back(surface);
+    for (PlanarPolygon& shape : JoinIntoPlanarPolygons(mesh, groups[g], group_normal[g])) {
+      building.polygons.push_back({std::move(shape), it->second});
+    }
+  }
+  return building;
+}
+
+/// Drops from every ring of `building` the points that lie on a straight line between their
+/// ring neighbours (within `tolerance`) in every ring that uses them: block seams and planes
+/// that end on a face leave such points along edges; dropped from every ring at once, the
+/// shell stays closed, and a point another polygon turns at (a T-junction) stays everywhere.
+void DropStraightRingPoints(const PolygonMesh& mesh, double tolerance,
+                            CityBuilding& building) {
+  std::map<std::uint32_t, std::pair<std::size_t, std::size_t>> uses;  // (all, straight)
+  for (const CityPolygon& polygon : building.polygons) {
+    for (const auto& ring : polygon.shape.rings) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Vec3& a = mesh.vertices[ring[(i + ring.size() - 1) % ring.size()]];
+        const Vec3& p = mesh.vertices[ring[i]];
+        const Vec3& b = mesh.vertices[ring[(i + 1) % ring.size()]];
+        const Vec3 ab = b - a;
+        const double t = ab.squaredNorm() > 0.0 ? (p - a).dot(ab) / ab.squaredNorm() : -1.0;
+        const bool straight = t > 0.0 && t < 1.0 && (a + t * ab - p).norm() <= tolerance;
+        auto& [all, on_line] = uses[ring[i]];
+        ++all;
+        on_line += straight ? 1 : 0;
+      }
+    }
+  }
+  for (CityPolygon& polygon : building.polygons) {
+    for (auto& ring : polygon.shape.rings) {
+      std::vector<std::uint32_t> kept;
+      for (const std::uint32_t v : ring) {
+        const auto& [all, on_line] = uses[v];
+        if (all != on_line) kept.push_back(v);
+      }
+      if (kept.size() >= 3) ring = std::move(kept);
+    }
+  }
+}
+
+}  // namespace
+
+const char* CityJsonName(SurfaceClass type) {
+  switch (type) {
+    case SurfaceClass::kRoof:
+      return "RoofSurface";
+    case SurfaceClass::kGround:
+      return "GroundSurface";
+    case SurfaceClass::kWall:
+      return "WallSurface";
+    case SurfaceClass::kCeiling:
+      return "CeilingSurface";
+    case SurfaceClass::kFloor:
+      return "FloorSurface";
+    case SurfaceClass::kInteriorWall:
+      return "InteriorWallSurface";
+  }
+  return "WallSurface";
+}
+
+CityModel BuildCityModel(const PolygonMesh& mesh,
+                         std::span<const Plane3> planes,
+                         const std::string& file) {
+  CheckFaces(mesh, file);
+  CityModel model;
+  for (const std::uint32_t v : mesh.face_indices) model.box.Extend(mesh.vertices[v]);
+  const double tolerance = kOnPlaneRelative * model.box.Extent().norm();
+  for (const auto& faces : FacesOfParts(mesh)) {
+    model.buildings.push_back(BuildBuilding(mesh, faces, planes, model.box));
+    DropStraightRingPoints(mesh, tolerance, model.buildings.back());
+  }
+  return model;
+}
+
+}  // namespace linesurf::io
