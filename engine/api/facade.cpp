@@ -12,6 +12,7 @@
 #include "engine/io/reference_json.h"
 #include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/detect_scene_planes.h"
+#include "engine/pipeline/mesh_validity.h"
 #include "engine/pipeline/sanitize_scene.h"
 
 namespace linesurf {
@@ -196,6 +197,12 @@ Status WriteMesh(const std::string& path,
 Status WriteVertexGroups(const std::string& path, const SceneData& scene) noexcept {
   return CatchAll("write_vertex_groups", [&] {
     ThrowIfInvalid(io::WriteVertexGroups(ToEngineSceneData(scene, path), path));
+  });
+}
+
+Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept {
+  return CatchAll("check_mesh", [&] {
+    return ValueOrThrow(CheckMeshValidity(ValueOrThrow(ToPolygonMesh(mesh))));
   });
 }
 

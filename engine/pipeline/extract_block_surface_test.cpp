@@ -8,7 +8,7 @@
 #include "partition/arrangement/cell_locator.h"
 #include "tests/support/t_junctions.h"
 #include "tests/support/thread_count.h"
-#include "tools/eval/mesh_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 
 #include <gtest/gtest.h>
 
@@ -137,7 +137,7 @@ void ExpectValidSurface(const PolygonMesh& mesh, double volume) {
   const IndexTopology t = CheckIndexTopology(mesh);
   EXPECT_TRUE(t.closed) << t.boundary_or_repeated_edges << " bad edges";
   EXPECT_TRUE(t.manifold) << t.non_manifold_vertices << " non-manifold vertices";
-  const Expected<MeshTopology> m = CheckMeshTopology(mesh);
+  const Expected<MeshValidity> m = CheckMeshValidity(mesh);
   ASSERT_TRUE(m) << m.error().ToString();
   EXPECT_TRUE(m->closed);
   EXPECT_TRUE(m->two_manifold);
@@ -288,8 +288,8 @@ TEST(ExtractBlockSurface, EveryPlaneInEveryBlockGivesTheMonolithicSurface) {
       ASSERT_TRUE(expected);
       const BlockExtractResult r = Stitch(cx, labels);
       ExpectValidSurface(r.mesh, volume);
-      const Expected<MeshTopology> a = CheckMeshTopology(r.mesh);
-      const Expected<MeshTopology> b = CheckMeshTopology(expected->mesh);
+      const Expected<MeshValidity> a = CheckMeshValidity(r.mesh);
+      const Expected<MeshValidity> b = CheckMeshValidity(expected->mesh);
       ASSERT_TRUE(a && b);
       EXPECT_EQ(a->num_components, b->num_components);
       EXPECT_EQ(EulerCharacteristic(r.mesh), EulerCharacteristic(expected->mesh));
@@ -371,7 +371,7 @@ TEST(ExtractBlockSurface, CellsMeetingAtBlockEdgesAndCorners) {
     }
     std::size_t components = 0;
     for (std::size_t b = 0; b < 8; ++b) components += (mask >> b & 1) != 0 && find(b) == b;
-    const Expected<MeshTopology> m = CheckMeshTopology(r.mesh);
+    const Expected<MeshValidity> m = CheckMeshValidity(r.mesh);
     ASSERT_TRUE(m);
     EXPECT_EQ(m->num_components, components) << "mask " << mask << ", " << full << " full";
   }
@@ -441,7 +441,7 @@ TEST(ExtractBlockSurface, RandomDegenerateConfigurations) {
     const BlockExtractResult r = Stitch(c.cx, c.labels, c.options);
     if (c.options.outside_full) {
       // The box's outside is full: the surface bounds the empty cells, inward.
-      const Expected<MeshTopology> m = CheckMeshTopology(r.mesh);
+      const Expected<MeshValidity> m = CheckMeshValidity(r.mesh);
       ASSERT_TRUE(m);
       EXPECT_TRUE(r.mesh.NumFaces() == 0 ||
                   (m->closed && m->two_manifold && m->oriented && !m->self_intersecting));

@@ -14,6 +14,7 @@
 #include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 #include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/scene_box.h"
 #include "engine/pipeline/stage_timer.h"
@@ -353,6 +354,14 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
       timer.Stop();
     }
     for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
+    // The surface as written: never returned broken; what only a solid must not have is said.
+    timer.Start("validity");
+    const MeshValidity validity = ValueOrThrow(CheckMeshValidity(result.mesh));
+    if (Status refused = RefuseBrokenSurface(validity); !refused) {
+      throw LinesurfException(refused.error());
+    }
+    for (std::string& w : SolidValidityWarnings(validity)) result.warnings.push_back(std::move(w));
+    timer.Stop();
 
     // Planes back to world coordinates.
     result.planes = scene.planes;

@@ -13,7 +13,7 @@
 #include "partition/arrangement/cell_geometry.h"
 #include "tests/bench/study_scene.h"
 #include "tests/support/mesh_checks.h"
-#include "tools/eval/mesh_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 
 #include <chrono>
 #include <cstdio>
@@ -107,7 +107,7 @@ int Run(const std::string& dir,
       const bool same = one.result.mesh.vertices == many.result.mesh.vertices &&
                         one.result.mesh.face_indices == many.result.mesh.face_indices &&
                         one.result.mesh.face_offsets == many.result.mesh.face_offsets;
-      const Expected<MeshTopology> t = CheckMeshTopology(one.result.mesh);
+      const Expected<MeshValidity> t = CheckMeshValidity(one.result.mesh);
       if (!t) {
         std::fprintf(stderr, "%s\n", t.error().ToString().c_str());
         return 1;

@@ -10,7 +10,7 @@
 #include "partition/arrangement/cell_geometry.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/t_junctions.h"
-#include "tools/eval/mesh_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 #include "tools/gen/synthesize.h"
 
 #include <gtest/gtest.h>
@@ -76,7 +76,7 @@ TEST_P(BlockStitch, GroundTruthLabelsGiveAClosedConformingManifold) {
         const Expected<pipeline::BlockExtractResult> r =
             pipeline::ExtractBlockSurface(p->complexes, labels, extract, RunContext{});
         ASSERT_TRUE(r) << r.error().ToString();
-        const Expected<MeshTopology> t = CheckMeshTopology(r->mesh);
+        const Expected<MeshValidity> t = CheckMeshValidity(r->mesh);
         ASSERT_TRUE(t) << t.error().ToString();
         EXPECT_TRUE(t->closed);
         EXPECT_TRUE(t->two_manifold);

@@ -10,6 +10,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
 #include "tools/cli/engine_run_context.h"
+#include "tools/cli/mesh_validity_json.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/surface_quality_json.h"
@@ -70,7 +71,6 @@ nlohmann::json StatsJson(const DistanceStats& s) {
 }
 
 nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r) {
-  const MeshTopology& t = r.topology;
   return {{"result", args.result_path},
           {"ground_truth", args.gt_path},
           {"visible_from", args.visible_from.empty() ? nlohmann::json() : nlohmann::json(args.visible_from)},
@@ -85,21 +85,7 @@ nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r) {
           {"num_visible_gt_samples", r.num_visible_gt_samples},
           {"result_area", r.result_area},
           {"gt_area", r.gt_area},
-          {"topology",
-           {{"closed", t.closed},
-            {"two_manifold", t.two_manifold},
-            {"oriented", t.oriented},
-            {"outward", t.outward},
-            {"self_intersecting", t.self_intersecting},
-            {"num_components", t.num_components},
-            {"num_faces", t.num_faces},
-            {"num_vertices", t.num_vertices},
-            {"num_coincident_vertices", t.num_coincident_vertices},
-            {"num_boundary_edges", t.num_boundary_edges},
-            {"num_non_manifold_edges", t.num_non_manifold_edges},
-            {"num_non_manifold_vertices", t.num_non_manifold_vertices},
-            {"num_degenerate_faces", t.num_degenerate_faces},
-            {"signed_volume", t.signed_volume}}}};
+          {"topology", MeshValidityJson(r.topology)}};
 }
 
 void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
@@ -121,7 +107,7 @@ void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
   };
   row("result -> GT", r.result_to_gt);
   row("GT -> result", r.gt_to_result);
-  const MeshTopology& t = r.topology;
+  const MeshValidity& t = r.topology;
   const auto yes = [](bool b) { return b ? "yes" : "no"; };
   std::printf("\nresult mesh: %zu faces, %zu vertices (%zu at the position of another), %zu component(s),\n"
               "  area %.6g, signed volume %.6g\n",

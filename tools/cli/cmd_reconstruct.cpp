@@ -5,11 +5,11 @@
 
 #include "tools/cli/commands.h"
 #include "tools/cli/detection_options.h"
+#include "tools/cli/mesh_validity_json.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 #include "tools/cli/surface_quality_json.h"
-#include "tools/eval/self_intersection.h"
 
 #include <cmath>
 #include <cstdio>
@@ -104,6 +104,9 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
                {"removed_fragments", s.removed_fragments},
                {"removed_fragment_volume", s.removed_fragment_volume},
                {"removed_fragment_segments", s.removed_fragment_segments}};
+  if (Expected<MeshValidity> validity = CheckMesh(r.mesh)) {
+    j["validity"] = MeshValidityJson(*validity);
+  }
   j["peak_memory_bytes"] = s.peak_memory_bytes;
   j["warnings"] = r.warnings;
   return j;
@@ -129,14 +132,6 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
       Reconstruct(read->scene.View(), args.options, CliRunControl(common));
   if (!result) return ReportError(result.error(), args.source.input);
   for (const std::string& w : result->warnings) PrintWarning(common, w);
-  // The mesh must pass the self-intersection check of `evaluate` (issue 12): never written
-  // in silence when it does not.
-  if (Expected<bool> intersects = IntersectsItself(result->mesh); intersects && *intersects) {
-    return ReportError(Error{ErrorCode::kDegenerate, "reconstruct",
-                             "the surface intersects itself (the check of linesurf evaluate): "
-                             "a defect of linesurf, please report it with the input"});
-  }
-
   MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   // The format follows the destination's name: the staged file keeps only its last extension.

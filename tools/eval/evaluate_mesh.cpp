@@ -152,7 +152,7 @@ EvaluationResult Evaluate(const PolygonMesh& result_mesh, const PolygonMesh& gt_
   out.gt_to_result = Summarise(std::move(gt_to_result));
   out.result_area = result_set.Area();
   out.gt_area = gt_set.Area();
-  auto topology = CheckMeshTopology(result_mesh);
+  auto topology = CheckMeshValidity(result_mesh);
   if (!topology) throw LinesurfException(topology.error());
   out.topology = *topology;
   return out;

@@ -12,7 +12,7 @@
 #include "engine/core/polygon_mesh.h"
 #include "engine/core/run_context.h"
 #include "linesurf/error.h"
-#include "tools/eval/mesh_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 
 namespace linesurf {
 
@@ -54,7 +54,7 @@ struct EvaluationResult {
   std::size_t num_visible_gt_samples = 0;
   double result_area = 0.0;
   double gt_area = 0.0;
-  MeshTopology topology;  ///< of the result
+  MeshValidity topology;  ///< of the result
 };
 
 /// @brief Evaluates `result` against `ground_truth` (both in the same frame and units).

@@ -131,6 +131,13 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteVertexGroups(const std::string& path,
                                                     const SceneData& scene) noexcept;
 
+/// @brief The validity classes of `mesh` as the boundary of solids (MeshValidity: closed,
+/// 2-manifold, oriented, coincident vertices, degenerate, zero-area and non-planar faces,
+/// self-intersection; docs/formats.md "Validity"), the checker Reconstruct runs on every result.
+/// @return kInvalidInput (an index out of range, inconsistent face offsets, a coordinate
+/// beyond the bound).
+[[nodiscard]] LINESURF_API Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept;
+
 /// @brief Writes a mesh as CityJSON 2.0: one Building per connected component, a Solid (LoD 2.2)
 /// whose surfaces are the component's faces joined per plane (holes as inner rings), a
 /// semantic surface per plane of `planes` and class (docs/formats.md); the same bytes as

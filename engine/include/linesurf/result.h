@@ -152,6 +152,57 @@ struct ReconstructStats {
   std::size_t peak_memory_bytes = 0;  ///< process peak RSS at the end of the run
 };
 
+/// What a mesh is as the boundary of solids: the classes of ISO 19107 / val3dity that GIS and
+/// BIM validators check (docs/formats.md, "Validity"). Connectivity is by vertex index: two
+/// vertices at one position are two vertices, counted in num_coincident_vertices. CheckMesh
+/// fills it; Reconstruct refuses a result that is not closed, 2-manifold at its edges, oriented,
+/// free of degenerate and non-planar faces and of self-intersection, and warns of the rest.
+struct MeshValidity {
+  /// No boundary edge: every undirected edge is used by exactly two faces (and the mesh has faces).
+  bool closed = false;
+  /// Every edge is used by at most two faces and the faces around every vertex form one fan.
+  bool two_manifold = false;
+  /// Every edge used by two faces is traversed once in each direction.
+  bool oriented = false;
+  /// Closed, oriented and with positive signed volume (normals point outwards).
+  bool outward = false;
+  /// num_intersecting_triangle_pairs > 0.
+  bool self_intersecting = false;
+  /// Connected components, faces linked through shared edges.
+  std::size_t num_components = 0;
+  std::size_t num_faces = 0;
+  std::size_t num_vertices = 0;
+  /// Vertices at the bit-identical position of another vertex (split where parts touch).
+  std::size_t num_coincident_vertices = 0;
+  std::size_t num_boundary_edges = 0;
+  std::size_t num_non_manifold_edges = 0;    ///< used by more than two faces
+  std::size_t num_non_manifold_vertices = 0;  ///< whose incident faces form several fans
+  std::size_t num_degenerate_faces = 0;       ///< fewer than 3 distinct vertices, or one twice
+  /// Faces thinner than 1e-9 of the bounding-box diagonal (twice the area over the longest
+  /// edge): zero-area faces up to the rounding of their vertices.
+  std::size_t num_zero_area_faces = 0;
+  /// Faces with a vertex farther than 1e-9 of the bounding-box diagonal from the plane of the
+  /// face (Newell's normal through the centroid).
+  std::size_t num_non_planar_faces = 0;
+  /// Pairs of triangles of the triangulated faces that intersect other than at a shared edge
+  /// or vertex (CGAL self_intersections), and have no corner position in common.
+  std::size_t num_intersecting_triangle_pairs = 0;
+  /// Pairs that meet at a corner position without sharing the vertex (coincident copies):
+  /// parts touching at split vertices.
+  std::size_t num_touching_triangle_pairs = 0;
+  /// Signed volume enclosed (divergence theorem over the faces); meaningful when closed.
+  double signed_volume = 0.0;
+  double area = 0.0;
+
+  /// Every class clear: closed, 2-manifold, oriented, and no count above is non-zero.
+  [[nodiscard]] bool IsValid() const noexcept {
+    return num_faces > 0 && closed && two_manifold && oriented && !self_intersecting &&
+           num_coincident_vertices == 0 && num_degenerate_faces == 0 &&
+           num_zero_area_faces == 0 && num_non_planar_faces == 0 &&
+           num_touching_triangle_pairs == 0;
+  }
+};
+
 /// Result of Reconstruct and Reconstruction::Solve.
 struct ReconstructResult {
   /// The closed, 2-manifold surface, faces oriented from full to empty space.

@@ -1,4 +1,4 @@
-#include "tools/eval/mesh_topology.h"
+#include "engine/pipeline/mesh_validity.h"
 
 #include "engine/core/coordinate_bound.h"
 #include "engine/core/disjoint_sets.h"
@@ -14,15 +14,20 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <vector>
 
 namespace linesurf {
 namespace {
 
-constexpr const char* kMeshTopologyStage = "check_mesh_topology";
+constexpr const char* kCheckMeshStage = "check_mesh";
+/// Flatness and planarity tolerances, relative to the bounding-box diagonal: far above the
+/// rounding of computed vertices (1e-16), far below any real feature.
+constexpr double kFlatRelative = 1e-9;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -44,8 +49,14 @@ std::size_t CountCoincidentVertices(const PolygonMesh& mesh) {
   return coincident;
 }
 
-bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::size_t>>& faces) {
-  if (faces.empty()) return false;
+struct TrianglePairs {
+  std::size_t intersecting = 0;
+  std::size_t touching = 0;
+};
+
+TrianglePairs IntersectingPairs(const PolygonMesh& mesh,
+                                const std::vector<std::vector<std::size_t>>& faces) {
+  if (faces.empty()) return {};
   std::vector<Kernel::Point_3> points;
   points.reserve(mesh.vertices.size());
   for (const Vec3& p : mesh.vertices) points.emplace_back(p.x(), p.y(), p.z());
@@ -59,13 +70,13 @@ bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::
   PMP::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
   LINESURF_THROW_IF(!PMP::triangulate_faces(cgal_mesh),
                     kDegenerate,
-                    kMeshTopologyStage,
+                    kCheckMeshStage,
                     "a face could not be triangulated for the self-intersection test");
   using Face = CgalMesh::Face_index;
   std::vector<std::pair<Face, Face>> pairs;
   PMP::self_intersections(CGAL::faces(cgal_mesh), cgal_mesh, std::back_inserter(pairs));
   // Faces that meet at a common position without sharing the vertex (split non-manifold
-  // vertices, coincident copies) touch there; CGAL reports them, we do not count them.
+  // vertices, coincident copies) touch there; they are counted apart.
   const auto corners = [&](Face f) {
     std::vector<Kernel::Point_3> out;
     for (auto v : CGAL::vertices_around_face(cgal_mesh.halfedge(f), cgal_mesh)) {
@@ -73,31 +84,59 @@ bool SelfIntersects(const PolygonMesh& mesh, const std::vector<std::vector<std::
     }
     return out;
   };
+  TrianglePairs counts;
   for (const auto& [f, g] : pairs) {
     bool touching = false;
     for (const auto& p : corners(f)) {
       for (const auto& q : corners(g)) touching = touching || p == q;
     }
-    if (!touching) return true;
+    ++(touching ? counts.touching : counts.intersecting);
   }
-  return false;
+  return counts;
 }
 
-MeshTopology Check(const PolygonMesh& mesh) {
+/// Whether `face` is thinner than `tolerance` (twice its area over its longest edge), and
+/// whether a vertex is farther than `tolerance` from its plane.
+std::pair<bool, bool> FlatAndPlanar(const PolygonMesh& mesh,
+                                    const std::vector<std::size_t>& face,
+                                    double tolerance) {
+  const Vec3 twice_area = TwiceVectorArea(
+      face.size(), [&](std::size_t k) -> const Vec3& { return mesh.vertices[face[k]]; });
+  double longest = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  for (std::size_t k = 0; k < face.size(); ++k) {
+    const Vec3& p = mesh.vertices[face[k]];
+    longest = std::max(longest, (mesh.vertices[face[(k + 1) % face.size()]] - p).norm());
+    centroid += p;
+  }
+  centroid /= static_cast<double>(face.size());
+  const double norm = twice_area.norm();
+  const bool flat = norm <= tolerance * longest;
+  bool planar = true;
+  if (!flat) {
+    const Vec3 normal = twice_area / norm;
+    for (const std::size_t v : face) {
+      planar = planar && std::abs(normal.dot(mesh.vertices[v] - centroid)) <= tolerance;
+    }
+  }
+  return {flat, planar};
+}
+
+MeshValidity Check(const PolygonMesh& mesh) {
   const std::size_t num_vertices = mesh.vertices.size();
   LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.front() != 0 ||
                         mesh.face_offsets.back() != mesh.face_indices.size(),
                     kInvalidInput,
-                    kMeshTopologyStage,
+                    kCheckMeshStage,
                     "face offsets do not cover the face indices");
   for (std::size_t i = 0; i < mesh.face_indices.size(); ++i) {
     LINESURF_THROW_IF(mesh.face_indices[i] >= num_vertices,
                       kInvalidInput,
-                      kMeshTopologyStage,
+                      kCheckMeshStage,
                       "face index " << i << " refers to vertex " << mesh.face_indices[i] << " of "
                                     << num_vertices);
   }
-  MeshTopology topo;
+  MeshValidity topo;
   topo.num_faces = mesh.NumFaces();
   topo.num_vertices = mesh.vertices.size();
   topo.num_coincident_vertices = CountCoincidentVertices(mesh);
@@ -118,6 +157,18 @@ MeshTopology Check(const PolygonMesh& mesh) {
       continue;
     }
     faces.push_back(std::move(face));
+  }
+
+  Box3 box;
+  for (const Vec3& p : mesh.vertices) box.Extend(p);
+  const double tolerance = box.IsEmpty() ? 0.0 : kFlatRelative * box.Extent().norm();
+  // Zero-area faces cannot be triangulated for the self-intersection test: they sit it out.
+  std::vector<std::vector<std::size_t>> with_area;
+  for (const auto& face : faces) {
+    const auto [flat, planar] = FlatAndPlanar(mesh, face, tolerance);
+    topo.num_zero_area_faces += flat ? 1 : 0;
+    topo.num_non_planar_faces += planar ? 0 : 1;
+    if (!flat) with_area.push_back(face);
   }
 
   // Area and signed volume over a fan triangulation: a planar face's area is the length of the
@@ -208,17 +259,59 @@ MeshTopology Check(const PolygonMesh& mesh) {
   topo.two_manifold = topo.num_non_manifold_edges == 0 && topo.num_non_manifold_vertices == 0;
   topo.oriented = consistent && topo.num_non_manifold_edges == 0;
   topo.outward = topo.closed && topo.oriented && topo.signed_volume > 0.0;
-  topo.self_intersecting = SelfIntersects(mesh, faces);
+  const TrianglePairs pairs = IntersectingPairs(mesh, with_area);
+  topo.num_intersecting_triangle_pairs = pairs.intersecting;
+  topo.num_touching_triangle_pairs = pairs.touching;
+  topo.self_intersecting = pairs.intersecting > 0;
   return topo;
 }
 
 }  // namespace
 
-Expected<MeshTopology> CheckMeshTopology(const PolygonMesh& mesh) noexcept {
+Expected<MeshValidity> CheckMeshValidity(const PolygonMesh& mesh) noexcept {
   if (const auto violation = CoordinateBoundViolation(mesh)) {
-    return Error{ErrorCode::kInvalidInput, kMeshTopologyStage, "mesh: " + *violation};
+    return Error{ErrorCode::kInvalidInput, kCheckMeshStage, "mesh: " + *violation};
   }
-  return CatchAll(kMeshTopologyStage, [&] { return Check(mesh); });
+  return CatchAll(kCheckMeshStage, [&] { return Check(mesh); });
+}
+
+
+Status RefuseBrokenSurface(const MeshValidity& v) {
+  std::string classes;
+  auto add = [&](bool broken, const std::string& what) {
+    if (broken) classes += (classes.empty() ? "" : ", ") + what;
+  };
+  add(v.num_faces == 0, "no face");
+  add(v.num_boundary_edges > 0, std::to_string(v.num_boundary_edges) + " boundary edges");
+  add(v.num_non_manifold_edges > 0,
+      std::to_string(v.num_non_manifold_edges) + " edges of more than two faces");
+  add(!v.oriented && v.num_non_manifold_edges == 0, "faces not consistently oriented");
+  add(v.num_degenerate_faces > 0, std::to_string(v.num_degenerate_faces) + " degenerate faces");
+  add(v.num_non_planar_faces > 0, std::to_string(v.num_non_planar_faces) + " non-planar faces");
+  add(v.self_intersecting, std::to_string(v.num_intersecting_triangle_pairs) +
+                               " pairs of intersecting triangles");
+  if (classes.empty()) return {};
+  return Error{ErrorCode::kDegenerate, kCheckMeshStage,
+               "the surface is not a valid boundary (" + classes +
+                   "): a defect of linesurf, please report it with the input"};
+}
+
+std::vector<std::string> SolidValidityWarnings(const MeshValidity& v) {
+  std::vector<std::string> warnings;
+  if (v.num_coincident_vertices > 0) {
+    warnings.push_back("mesh: " + std::to_string(v.num_coincident_vertices) +
+                       " vertices at the position of another (parts touching there, split): "
+                       "not one valid solid for GIS and BIM validators");
+  }
+  if (v.num_touching_triangle_pairs > 0) {
+    warnings.push_back("mesh: " + std::to_string(v.num_touching_triangle_pairs) +
+                       " pairs of triangles touching at a split vertex");
+  }
+  if (v.num_zero_area_faces > 0) {
+    warnings.push_back("mesh: " + std::to_string(v.num_zero_area_faces) +
+                       " faces of zero area (thinner than 1e-9 of the scene diagonal)");
+  }
+  return warnings;
 }
 
 }  // namespace linesurf
