@@ -9,6 +9,7 @@
 #include "engine/api/scene_conversion.h"
 #include "engine/core/exception.h"
 #include "engine/io/cityjson_write.h"
+#include "engine/io/ifc_write.h"
 #include "engine/io/reference_json.h"
 #include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/detect_scene_planes.h"
@@ -55,13 +56,13 @@ pipeline::DetectedScene Detect(Scene scene,
       std::move(scene), {}, api::ToEngineOptions(options.detection, options.seed), host.Context()));
 }
 
-/// Runs `write` (io::WriteCityJson or io::WriteCityJsonSeq) on the engine's mesh and planes.
+/// Runs `write` (io::WriteCityJson, WriteCityJsonSeq or WriteIfc) on the engine's mesh and planes.
 template <typename Write>
 Status WriteCityModel(const char* stage,
                       const std::string& path,
                       const Mesh& mesh,
                       std::span<const Plane> planes,
-                      const CityJsonOptions& options,
+                      const GeoreferenceOptions& options,
                       Write write) {
   return CatchAll(stage, [&] {
     const PolygonMesh engine_mesh = ValueOrThrowFor(ToPolygonMesh(mesh), path);
@@ -209,7 +210,7 @@ Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept {
 Status WriteCityJson(const std::string& path,
                      const Mesh& mesh,
                      std::span<const Plane> planes,
-                     const CityJsonOptions& options) noexcept {
+                     const GeoreferenceOptions& options) noexcept {
   return WriteCityModel("write_cityjson", path, mesh, planes, options,
                         [](const auto&... args) { return io::WriteCityJson(args...); });
 }
@@ -217,15 +218,27 @@ Status WriteCityJson(const std::string& path,
 Status WriteCityJson(const std::string& path,
                      const Mesh& mesh,
                      std::span<const Plane> planes) noexcept {
-  return WriteCityJson(path, mesh, planes, CityJsonOptions{});
+  return WriteCityJson(path, mesh, planes, GeoreferenceOptions{});
 }
 
 Status WriteCityJsonSeq(const std::string& path,
                         const Mesh& mesh,
                         std::span<const Plane> planes,
-                        const CityJsonOptions& options) noexcept {
+                        const GeoreferenceOptions& options) noexcept {
   return WriteCityModel("write_cityjson", path, mesh, planes, options,
                         [](const auto&... args) { return io::WriteCityJsonSeq(args...); });
+}
+
+Status WriteIfc(const std::string& path,
+                const Mesh& mesh,
+                std::span<const Plane> planes,
+                const GeoreferenceOptions& options) noexcept {
+  return WriteCityModel("write_ifc", path, mesh, planes, options,
+                        [](const auto&... args) { return io::WriteIfc(args...); });
+}
+
+bool IsIfcPath(const std::string& path) noexcept {
+  return IsPathOf(path, [](const std::string& p) { return io::IsIfcPath(p); });
 }
 
 bool IsCityJsonPath(const std::string& path) noexcept {

@@ -14,7 +14,7 @@
 namespace linesurf::io {
 namespace {
 
-constexpr const char* kCityModelStage = "write_cityjson";
+constexpr const char* kCityModelStage = "city_model";
 constexpr double kWallMaxTiltDeg = 10.0;
 /// Faces are cut from the planes exactly; only the rounding of their vertices to doubles
 /// separates them from their plane.

@@ -5,9 +5,9 @@
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
 #include "engine/io/number_text.h"
+#include "engine/io/reference_system.h"
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <string>
 #include <unordered_map>
@@ -64,21 +64,6 @@ class VertexNumbering {
   std::vector<QuantisedPoint> points_;
 };
 
-/// metadata.referenceSystem for "EPSG:CODE" (case-insensitive prefix).
-std::string ReferenceSystemUrl(const std::string& crs) {
-  const std::string prefix = "epsg:";
-  bool valid = crs.size() > prefix.size();
-  for (std::size_t i = 0; valid && i < crs.size(); ++i) {
-    const auto c = static_cast<unsigned char>(crs[i]);
-    valid = i < prefix.size() ? std::tolower(c) == prefix[i] : std::isdigit(c) != 0;
-  }
-  LINESURF_THROW_IF(!valid,
-                    kInvalidOptions,
-                    kCityjsonWriteStage,
-                    "crs: '" << crs << "' is not EPSG:CODE (e.g. EPSG:7415)");
-  return "https://www.opengis.net/def/crs/EPSG/0/" + crs.substr(prefix.size());
-}
-
 void AppendDoubles(std::string& out, std::initializer_list<double> values) {
   out += '[';
   bool first = true;
@@ -99,7 +84,7 @@ void AppendSigned(std::string& out, long long value) {
 /// `"version", "transform", "metadata"` members of the document and of a sequence's header.
 std::string HeaderMembers(const CityModel& model,
                           const Quantisation& quantisation,
-                          const CityJsonOptions& options) {
+                          const GeoreferenceOptions& options) {
   std::string out = "\"type\":\"CityJSON\",\"version\":\"2.0\",\"transform\":{\"scale\":";
   const double s = quantisation.scale;
   const Vec3& t = quantisation.translate;
@@ -115,7 +100,8 @@ std::string HeaderMembers(const CityModel& model,
                   {box.min.x(), box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z()});
   }
   if (!options.crs.empty()) {
-    out += ",\"referenceSystem\":\"" + ReferenceSystemUrl(options.crs) + '"';
+    out += ",\"referenceSystem\":\"https://www.opengis.net/def/crs/EPSG/0/" + EpsgCode(options.crs) +
+           '"';
   }
   out += '}';
   return out;
@@ -221,7 +207,7 @@ std::string BuildingId(std::size_t b) { return "building_" + std::to_string(b); 
 
 std::string CityJsonText(const PolygonMesh& mesh,
                          std::span<const Plane3> planes,
-                         const CityJsonOptions& options,
+                         const GeoreferenceOptions& options,
                          const std::string& file) {
   const CityModel model = BuildCityModel(mesh, planes, file);
   const Quantisation quantisation(model.box);
@@ -245,7 +231,7 @@ std::string CityJsonText(const PolygonMesh& mesh,
 
 std::string CityJsonSeqText(const PolygonMesh& mesh,
                             std::span<const Plane3> planes,
-                            const CityJsonOptions& options,
+                            const GeoreferenceOptions& options,
                             const std::string& file) {
   const CityModel model = BuildCityModel(mesh, planes, file);
   const Quantisation quantisation(model.box);
@@ -267,19 +253,6 @@ std::string CityJsonSeqText(const PolygonMesh& mesh,
 
 }  // namespace
 
-}  // namespace linesurf::io
-
-namespace linesurf {
-
-Status CityJsonOptions::Validate() const noexcept {
-  return CatchAll(io::kCityjsonWriteStage, [&] {
-    if (!crs.empty()) static_cast<void>(io::ReferenceSystemUrl(crs));
-  });
-}
-
-}  // namespace linesurf
-
-namespace linesurf::io {
 
 bool IsCityJsonPath(const std::filesystem::path& path) {
   if (LowerExtension(path) == ".cityjson") return true;
@@ -292,7 +265,7 @@ bool IsCityJsonSeqPath(const std::filesystem::path& path) {
 
 Status WriteCityJson(const PolygonMesh& mesh,
                      std::span<const Plane3> planes,
-                     const CityJsonOptions& options,
+                     const GeoreferenceOptions& options,
                      const std::filesystem::path& path) noexcept {
   return CatchAll(kCityjsonWriteStage, [&] {
     WriteFileAtomically(
@@ -302,7 +275,7 @@ Status WriteCityJson(const PolygonMesh& mesh,
 
 Status WriteCityJsonSeq(const PolygonMesh& mesh,
                         std::span<const Plane3> planes,
-                        const CityJsonOptions& options,
+                        const GeoreferenceOptions& options,
                         const std::filesystem::path& path) noexcept {
   return CatchAll(kCityjsonWriteStage, [&] {
     WriteFileAtomically(

@@ -33,7 +33,7 @@ namespace linesurf::io {
 /// non-finite coordinate or an unwritable path; kInvalidOptions on a crs not "EPSG:CODE".
 [[nodiscard]] Status WriteCityJson(const PolygonMesh& mesh,
                                    std::span<const Plane3> planes,
-                                   const CityJsonOptions& options,
+                                   const GeoreferenceOptions& options,
                                    const std::filesystem::path& path) noexcept;
 
 /// @brief The same buildings as a CityJSONSeq file (one JSON object per line): first the
@@ -42,7 +42,7 @@ namespace linesurf::io {
 /// @return as WriteCityJson.
 [[nodiscard]] Status WriteCityJsonSeq(const PolygonMesh& mesh,
                                       std::span<const Plane3> planes,
-                                      const CityJsonOptions& options,
+                                      const GeoreferenceOptions& options,
                                       const std::filesystem::path& path) noexcept;
 
 }  // namespace linesurf::io

@@ -58,7 +58,7 @@ Vec3 Vertex(const nlohmann::json& vertices, const nlohmann::json& transform, std
 Status Write(const PolygonMesh& mesh,
              std::span<const Plane3> planes,
              const std::filesystem::path& path,
-             const CityJsonOptions& options = {}) {
+             const GeoreferenceOptions& options = {}) {
   return WriteCityJson(mesh, planes, options, path);
 }
 
@@ -192,7 +192,7 @@ TEST(CityJson, SequenceHasAHeaderAndOneFeaturePerBuilding) {
   AddBox(mesh, offset, offset + Vec3(10, 8, 6));
   AddBox(mesh, offset + Vec3(20, 0, 0), offset + Vec3(24, 4, 3));
   const auto dir = testing::FreshTempDir();
-  CityJsonOptions options;
+  GeoreferenceOptions options;
   options.crs = "EPSG:7415";
   ASSERT_TRUE(WriteCityJsonSeq(mesh, {}, options, dir / "m.city.jsonl"));
   const auto lines = ReadLines(dir / "m.city.jsonl");
@@ -223,7 +223,7 @@ TEST(CityJson, SequenceHasAHeaderAndOneFeaturePerBuilding) {
 }
 
 TEST(CityJson, ReferenceSystemMustBeAnEpsgCode) {
-  CityJsonOptions options;
+  GeoreferenceOptions options;
   options.crs = "EPSG:28992";
   EXPECT_TRUE(options.Validate());
   for (const char* bad : {"28992", "EPSG:", "EPSG:28992x", "WGS84"}) {

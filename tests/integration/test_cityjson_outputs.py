@@ -1,7 +1,8 @@
-"""CityJSON 2.0 and CityJSONSeq written by `linesurf reconstruct`, checked by an independent
-checker (tests/support/cityjson_check.py) and, when ../shared holds them, by the official
-CityJSON 2.0.2 schemas; the checker itself is shown to catch every defect class on hand-made
-files."""
+"""CityJSON 2.0, CityJSONSeq and IFC4 written by `linesurf reconstruct`: CityJSON checked by an
+independent checker (tests/support/cityjson_check.py) and, when ../shared holds them, by the
+official CityJSON 2.0.2 schemas (the checker itself is shown to catch every defect class on
+hand-made files); IFC read back by a STEP reader of its own (tests/support/ifc_read.py) with the
+volume and face count of the reconstruction."""
 
 import copy
 import json
@@ -14,6 +15,7 @@ import unittest
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 import cityjson_check  # noqa: E402
+import ifc_read  # noqa: E402
 
 CLI = os.environ.get("LINESURF_CLI", "")
 SOURCE_DIR = os.environ.get("LINESURF_SOURCE_DIR", os.path.join(HERE, "..", ".."))
@@ -51,17 +53,35 @@ class WrittenFiles(unittest.TestCase):
         for name, scene, extra in (("house", HOUSE, ["--scene", "exterior"]),
                                    ("city", os.path.join(city, "lines.json"),
                                     ["--crs", "EPSG:7415"])):
-            for ext in (".city.json", ".city.jsonl"):
+            for ext in (".city.json", ".city.jsonl", ".ifc"):
                 path = os.path.join(out, name + ext)
-                run_cli("reconstruct", scene, "-o", path, *extra)
+                report = os.path.join(out, name + ext + ".report.json")
+                run_cli("reconstruct", scene, "-o", path, "--report", report, *extra)
                 cls.files[name + ext] = path
+                cls.files[name + ext + ".report"] = report
 
     @classmethod
     def tearDownClass(cls):
         cls.dir.cleanup()
 
+    def test_ifc_reads_back_with_the_volume_and_faces(self):
+        for name in ("house", "city"):
+            model = ifc_read.read_ifc(self.files[name + ".ifc"])
+            with open(self.files[name + ".ifc.report"], encoding="utf-8") as f:
+                volume = json.load(f)["validity"]["signed_volume"]
+            city = cityjson_check.check_file(self.files[name + ".city.json"])
+            self.assertEqual(model["schema"], "IFC4", name)
+            self.assertEqual(model["buildings"], city["buildings"], name)
+            self.assertEqual(model["faces"], city["polygons"], name)
+            self.assertAlmostEqual(model["volume"], volume, delta=1e-6 * abs(volume), msg=name)
+        crs = ifc_read.read_ifc(self.files["city.ifc"])
+        self.assertEqual(crs["crs"], "EPSG:7415")
+        self.assertGreater(crs["min_corner"][0], 999000.0)  # the 1e6 m offset kept
+
     def test_every_file_is_valid(self):
         for name, path in self.files.items():
+            if not name.endswith((".city.json", ".city.jsonl")):
+                continue
             result = cityjson_check.check_file(path, self.validators)
             self.assertEqual(result["version"], "2.0", name)
             self.assertEqual(defects(result), {}, name)
@@ -71,7 +91,8 @@ class WrittenFiles(unittest.TestCase):
         if self.validators is None:
             self.skipTest(f"no CityJSON 2.0.2 schemas in {SCHEMA_DIR} (../shared/reference)")
         for name, path in self.files.items():
-            self.assertTrue(cityjson_check.check_file(path, self.validators)["schema_checked"])
+            if name.endswith((".city.json", ".city.jsonl")):
+                self.assertTrue(cityjson_check.check_file(path, self.validators)["schema_checked"])
 
     def test_sequence_holds_the_document_buildings(self):
         for name in ("house", "city"):

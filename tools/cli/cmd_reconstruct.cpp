@@ -1,4 +1,4 @@
-// `linesurf reconstruct INPUT -o MESH.{ply,obj,off,city.json}`: the whole method
+// `linesurf reconstruct INPUT -o MESH.{ply,obj,off,city.json,city.jsonl,ifc}`: the whole method
 // (docs/reconstruction.md).
 
 #include "linesurf/linesurf.h"
@@ -28,7 +28,7 @@ struct ReconstructArgs {
   std::string report;
   bool ascii = false;
   bool cityjson = false;
-  CityJsonOptions city;
+  GeoreferenceOptions georeference;
   ReconstructOptions options;
   std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
@@ -114,13 +114,14 @@ nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& 
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
-  if (Status s = args.city.Validate(); !s) return ReportError(s.error());
+  if (Status s = args.georeference.Validate(); !s) return ReportError(s.error());
   OutputFiles files("reconstruct");
   args.source.AddInputsTo(files);
   const bool sequence = IsCityJsonSeqPath(args.output);
-  const bool cityjson = !sequence && (args.cityjson || IsCityJsonPath(args.output));
+  const bool ifc = IsIfcPath(args.output);
+  const bool cityjson = !sequence && !ifc && (args.cityjson || IsCityJsonPath(args.output));
   files.AddOutput("-o", args.output,
-                  cityjson || sequence ? std::vector<std::string>{} : kMeshExtensions);
+                  cityjson || sequence || ifc ? std::vector<std::string>{} : kMeshExtensions);
   files.AddOutput("--report", args.report, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
   Expected<ReadSceneResult> read = ReadScene(args.source.input, args.source.Options());
@@ -136,8 +137,10 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   // The format follows the destination's name: the staged file keeps only its last extension.
   auto write_surface = [&](const std::filesystem::path& path) {
-    if (sequence) return WriteCityJsonSeq(path.string(), result->mesh, result->planes, args.city);
-    if (cityjson) return WriteCityJson(path.string(), result->mesh, result->planes, args.city);
+    const GeoreferenceOptions& geo = args.georeference;
+    if (sequence) return WriteCityJsonSeq(path.string(), result->mesh, result->planes, geo);
+    if (cityjson) return WriteCityJson(path.string(), result->mesh, result->planes, geo);
+    if (ifc) return WriteIfc(path.string(), result->mesh, result->planes, geo);
     return WriteMesh(path.string(), result->mesh, write);
   };
   if (Status s = files.Write(args.output, write_surface); !s) return ReportError(s.error());
@@ -251,8 +254,8 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   r.AddFlag("cityjson", args->cityjson,
             "Write CityJSON whatever the output extension (one Building per connected part; "
             ".city.jsonl names write CityJSONSeq)");
-  r.Add("crs", args->city.crs,
-        "CityJSON: the coordinates' reference system, EPSG:CODE (metadata.referenceSystem)");
+  r.Add("crs", args->georeference.crs,
+        "CityJSON and IFC: the coordinates' reference system, EPSG:CODE");
   r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
   r.AddFlag(
       "merge-coplanar",

@@ -147,7 +147,7 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteCityJson(const std::string& path,
                                                 const Mesh& mesh,
                                                 std::span<const Plane> planes,
-                                                const CityJsonOptions& options) noexcept;
+                                                const GeoreferenceOptions& options) noexcept;
 
 /// WriteCityJson with default options (no CRS stated).
 [[nodiscard]] LINESURF_API Status WriteCityJson(const std::string& path,
@@ -161,10 +161,24 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteCityJsonSeq(const std::string& path,
                                                    const Mesh& mesh,
                                                    std::span<const Plane> planes,
-                                                   const CityJsonOptions& options = {}) noexcept;
+                                                   const GeoreferenceOptions& options = {}) noexcept;
 
 /// True for a name ending in ".city.json" or ".cityjson" (case-insensitive): CityJSON by name.
 [[nodiscard]] LINESURF_API bool IsCityJsonPath(const std::string& path) noexcept;
+
+/// @brief Writes a mesh as IFC4 (STEP text) for BIM tools: an IfcBuilding per connected
+/// component with one IfcBuildingElementProxy whose faceted B-rep faces are those of
+/// WriteCityJson (one per plane, holes as inner bounds), metres, the site placed at the mesh's
+/// minimum corner in whole metres, options.crs as IfcProjectedCRS (docs/formats.md); the same
+/// bytes as `linesurf reconstruct -o m.ifc`. Written to a temporary name and renamed.
+/// @return as WriteCityJson.
+[[nodiscard]] LINESURF_API Status WriteIfc(const std::string& path,
+                                           const Mesh& mesh,
+                                           std::span<const Plane> planes,
+                                           const GeoreferenceOptions& options = {}) noexcept;
+
+/// True for a name ending in ".ifc" (case-insensitive): IFC by name.
+[[nodiscard]] LINESURF_API bool IsIfcPath(const std::string& path) noexcept;
 
 /// True for a name ending in ".jsonl" (case-insensitive, e.g. ".city.jsonl"): CityJSONSeq by name.
 [[nodiscard]] LINESURF_API bool IsCityJsonSeqPath(const std::string& path) noexcept;

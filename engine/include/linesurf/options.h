@@ -232,10 +232,10 @@ struct MeshWriteOptions {
   bool triangulate = false;
 };
 
-/// Options of WriteCityJson and WriteCityJsonSeq.
-struct CityJsonOptions {
+/// Options of the writers of georeferenced formats: WriteCityJson, WriteCityJsonSeq, WriteIfc.
+struct GeoreferenceOptions {
   /// Coordinate reference system of the mesh's coordinates, "EPSG:CODE" (e.g. "EPSG:7415"),
-  /// written as metadata.referenceSystem; empty: no CRS stated.
+  /// written as CityJSON metadata.referenceSystem and as IFC IfcProjectedCRS; empty: none stated.
   std::string crs;
 
   [[nodiscard]] LINESURF_API Status Validate() const noexcept;
