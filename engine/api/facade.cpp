@@ -150,9 +150,9 @@ Expected<ReconstructResult> Reconstruction::Solve(const EnergyWeights& weights,
                                                   const RunControl& control) const noexcept {
   return CatchAll("solve", [&]() -> ReconstructResult {
     LINESURF_THROW_IF(!impl_, kInvalidOptions, "solve", "this Reconstruction was moved from");
-    ThrowIfInvalid(api::ValidateWeights(weights));
+    ThrowIfInvalid(ValidateOptionValues(weights));
     pipeline::ReconstructOptions engine_options = api::ToEngineOptions(impl_->options);
-    api::SetEngineWeights(weights, engine_options.energy);
+    engine_options.energy.weights = weights;
     const api::HostContext host(control, impl_->options.num_threads);
     return api::ToPublicResult(
         ValueOrThrow(pipeline::SolvePrepared(impl_->prepared, engine_options, host.Context())));

@@ -6,13 +6,14 @@
 #include "linesurf/linesurf.h"
 
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <map>
 #include <memory>
+#include <mutex>
 #include <new>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 struct linesurf_error {
   linesurf_status code = LINESURF_ERROR_INTERNAL;
@@ -26,6 +27,9 @@ struct linesurf_options {
 };
 struct linesurf_result {
   linesurf::ReconstructResult result;
+  linesurf::ReconstructOptions options;  ///< those of the run, for the report
+  std::string report;                    ///< ReportJson, made on the first request
+  std::once_flag report_made;
 };
 
 namespace {
@@ -85,110 +89,64 @@ bool FitsInteger(double value) {
          value <= static_cast<double>(std::numeric_limits<T>::max());
 }
 
-using NumberSetter = std::function<bool(linesurf::ReconstructOptions&, double)>;
+/// How setting an option by name went.
+enum class SetOutcome { kUnknownName, kWrongKind, kBadValue, kSet };
 
-template <typename T>
-NumberSetter Integer(T linesurf::ReconstructOptions::*field) {
-  return [field](linesurf::ReconstructOptions& o, double v) {
-    if (!FitsInteger<T>(v)) return false;
-    o.*field = static_cast<T>(v);
-    return true;
-  };
+/// Sets the number option `name` (integers, reals, optional reals, flags as 0/1) of the schema.
+SetOutcome SetNumber(linesurf::ReconstructOptions& o, std::string_view name, double value) {
+  SetOutcome outcome = SetOutcome::kUnknownName;
+  linesurf::VisitOptions(o, [&](const linesurf::OptionSpec& spec, auto& field) {
+    if (spec.path != name) return;
+    using T = std::remove_reference_t<decltype(field)>;
+    if constexpr (std::is_same_v<T, bool>) {
+      outcome = value == 0.0 || value == 1.0 ? SetOutcome::kSet : SetOutcome::kBadValue;
+      if (outcome == SetOutcome::kSet) field = value != 0.0;
+    } else if constexpr (std::is_integral_v<T>) {
+      outcome = FitsInteger<T>(value) ? SetOutcome::kSet : SetOutcome::kBadValue;
+      if (outcome == SetOutcome::kSet) field = static_cast<T>(value);
+    } else if constexpr (std::is_enum_v<T>) {
+      outcome = SetOutcome::kWrongKind;
+    } else {  // double or std::optional<double>
+      field = value;
+      outcome = SetOutcome::kSet;
+    }
+  });
+  return outcome;
 }
 
-/// An integer field of a nested options struct (`detection`, `quality`).
-template <typename S, typename T>
-NumberSetter NestedInteger(S linesurf::ReconstructOptions::*nested, T S::*field) {
-  return [nested, field](linesurf::ReconstructOptions& o, double v) {
-    if (!FitsInteger<T>(v)) return false;
-    (o.*nested).*field = static_cast<T>(v);
-    return true;
-  };
+/// Sets the enumerated option `name` of the schema by the name of its value.
+SetOutcome SetEnum(linesurf::ReconstructOptions& o, std::string_view name, std::string_view value) {
+  SetOutcome outcome = SetOutcome::kUnknownName;
+  linesurf::VisitOptions(o, [&](const linesurf::OptionSpec& spec, auto& field) {
+    if (spec.path != name) return;
+    using T = std::remove_reference_t<decltype(field)>;
+    if constexpr (std::is_enum_v<T>) {
+      const std::optional<T> parsed = linesurf::OptionEnumFromName<T>(value);
+      outcome = parsed ? SetOutcome::kSet : SetOutcome::kBadValue;
+      if (parsed) field = *parsed;
+    } else {
+      outcome = SetOutcome::kWrongKind;
+    }
+  });
+  return outcome;
 }
 
-/// A real field, plain or optional: `field(options)` is a reference to it.
-template <typename Field>
-NumberSetter Real(Field field) {
-  return [field](linesurf::ReconstructOptions& o, double v) {
-    field(o) = v;
-    return true;
-  };
+/// The C status and message of a failed SetNumber or SetEnum.
+linesurf_status FailSet(linesurf_error** error,
+                        SetOutcome outcome,
+                        const char* name,
+                        const std::string& value,
+                        const char* kind) {
+  std::string message = "options: ";
+  if (outcome == SetOutcome::kUnknownName) {
+    message += std::string("no option named '") + name + "'";
+  } else if (outcome == SetOutcome::kWrongKind) {
+    message += std::string(name) + " is not a " + kind + " option";
+  } else {
+    message += "'" + value + "' is not a value of " + name;
+  }
+  return Fail(error, LINESURF_ERROR_INVALID_OPTIONS, message);
 }
-
-NumberSetter Flag(bool linesurf::ReconstructOptions::*field) {
-  return [field](linesurf::ReconstructOptions& o, double v) {
-    if (v != 0.0 && v != 1.0) return false;
-    o.*field = v != 0.0;
-    return true;
-  };
-}
-
-#define LINESURF_C_REAL(path) Real([](linesurf::ReconstructOptions & o) -> auto& { return o.path; })
-
-/// Every numeric field of ReconstructOptions by its C++ path.
-const std::map<std::string_view, NumberSetter>& NumberSetters() {
-  using linesurf::DetectionParameters;
-  using linesurf::QualityOptions;
-  using linesurf::ReconstructOptions;
-  static const std::map<std::string_view, NumberSetter> setters = {
-      {"detection.epsilon",
-       [](ReconstructOptions& o, double v) {
-         o.detection.epsilon = v;
-         return true;
-       }},
-      {"detection.epsilon_over_noise", LINESURF_C_REAL(detection.epsilon_over_noise)},
-      {"detection.relative_epsilon",
-       [](ReconstructOptions& o, double v) {
-         o.detection.relative_epsilon = v;
-         return true;
-       }},
-      {"detection.epsilon_fusion_factor", LINESURF_C_REAL(detection.epsilon_fusion_factor)},
-      {"detection.theta_fusion_deg", LINESURF_C_REAL(detection.theta_fusion_deg)},
-      {"detection.p_fusion", LINESURF_C_REAL(detection.p_fusion)},
-      {"detection.iterations",
-       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::iterations)},
-      {"detection.max_planes",
-       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::max_planes)},
-      {"detection.min_support",
-       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::min_support)},
-      {"detection.support_gap", LINESURF_C_REAL(detection.support_gap)},
-      {"detection.collinear_tolerance", LINESURF_C_REAL(detection.collinear_tolerance)},
-      {"detection.block_size", LINESURF_C_REAL(detection.block_size)},
-      {"detection.block_halo", LINESURF_C_REAL(detection.block_halo)},
-      {"detection.block_max_segments",
-       NestedInteger(&ReconstructOptions::detection, &DetectionParameters::block_max_segments)},
-      {"weights.textural", LINESURF_C_REAL(weights.textural)},
-      {"weights.structural", LINESURF_C_REAL(weights.structural)},
-      {"weights.crease", LINESURF_C_REAL(weights.crease)},
-      {"weights.visibility", LINESURF_C_REAL(weights.visibility)},
-      {"weights.edge", LINESURF_C_REAL(weights.edge)},
-      {"weights.corner", LINESURF_C_REAL(weights.corner)},
-      {"weights.area", LINESURF_C_REAL(weights.area)},
-      {"weights.viewpoint_prior", LINESURF_C_REAL(weights.viewpoint_prior)},
-      {"weights.open_seam", LINESURF_C_REAL(weights.open_seam)},
-      {"sigma", LINESURF_C_REAL(sigma)},
-      {"samples_per_sigma", LINESURF_C_REAL(samples_per_sigma)},
-      {"structural_as_textural", Flag(&ReconstructOptions::structural_as_textural)},
-      {"solver.time_limit_seconds", LINESURF_C_REAL(solver.time_limit_seconds)},
-      {"block_size", LINESURF_C_REAL(block_size)},
-      {"block_margin", LINESURF_C_REAL(block_margin)},
-      {"box_margin", LINESURF_C_REAL(box_margin)},
-      {"measure_quality", Flag(&ReconstructOptions::measure_quality)},
-      {"remove_floating_fragments", Flag(&ReconstructOptions::remove_floating_fragments)},
-      {"quality.fit_factor", LINESURF_C_REAL(quality.fit_factor)},
-      {"quality.samples_per_segment",
-       NestedInteger(&ReconstructOptions::quality, &QualityOptions::samples_per_segment)},
-      {"quality.min_lines_per_component",
-       NestedInteger(&ReconstructOptions::quality, &QualityOptions::min_lines_per_component)},
-      {"triangulate", Flag(&ReconstructOptions::triangulate)},
-      {"merge_coplanar", Flag(&ReconstructOptions::merge_coplanar)},
-      {"num_threads", Integer(&ReconstructOptions::num_threads)},
-      {"seed", Integer(&ReconstructOptions::seed)},
-  };
-  return setters;
-}
-
-#undef LINESURF_C_REAL
 
 }  // namespace
 
@@ -289,17 +247,9 @@ linesurf_status linesurf_options_set_number(linesurf_options* options,
                   LINESURF_ERROR_INVALID_OPTIONS,
                   "linesurf_options_set_number: options or name is NULL");
     }
-    const auto& setters = NumberSetters();
-    const auto it = setters.find(name);
-    if (it == setters.end()) {
-      return Fail(error,
-                  LINESURF_ERROR_INVALID_OPTIONS,
-                  std::string("options: no numeric option named '") + name + "'");
-    }
-    if (!it->second(options->options, value)) {
-      return Fail(error,
-                  LINESURF_ERROR_INVALID_OPTIONS,
-                  std::string("options: ") + name + " cannot hold " + std::to_string(value));
+    const SetOutcome outcome = SetNumber(options->options, name, value);
+    if (outcome != SetOutcome::kSet) {
+      return FailSet(error, outcome, name, std::to_string(value), "numeric");
     }
     return LINESURF_OK;
   });
@@ -315,41 +265,9 @@ linesurf_status linesurf_options_set_string(linesurf_options* options,
                   LINESURF_ERROR_INVALID_OPTIONS,
                   "linesurf_options_set_string: options, name or value is NULL");
     }
-    const std::string_view key(name);
-    bool known = true;
-    if (key == "planes") {
-      known = false;
-      if (const auto v = linesurf::PlaneSourceFromName(value)) {
-        options->options.planes = *v;
-        return LINESURF_OK;
-      }
-    } else if (key == "scene_mode") {
-      known = false;
-      if (const auto v = linesurf::SceneModeFromName(value)) {
-        options->options.scene_mode = *v;
-        return LINESURF_OK;
-      }
-    } else if (key == "solver.backend") {
-      known = false;
-      if (const auto v = linesurf::SolverBackendFromName(value)) {
-        options->options.solver.backend = *v;
-        return LINESURF_OK;
-      }
-    } else if (key == "engine") {
-      known = false;
-      if (const auto v = linesurf::ComplexEngineFromName(value)) {
-        options->options.engine = *v;
-        return LINESURF_OK;
-      }
-    }
-    if (known) {
-      return Fail(error,
-                  LINESURF_ERROR_INVALID_OPTIONS,
-                  std::string("options: no string option named '") + name + "'");
-    }
-    return Fail(error,
-                LINESURF_ERROR_INVALID_OPTIONS,
-                std::string("options: '") + value + "' is not a value of " + name);
+    const SetOutcome outcome = SetEnum(options->options, name, value);
+    if (outcome != SetOutcome::kSet) return FailSet(error, outcome, name, value, "string");
+    return LINESURF_OK;
   });
 }
 
@@ -379,7 +297,10 @@ linesurf_result* linesurf_reconstruct(const linesurf_scene* scene,
       Fail(error, r.error());
       return nullptr;
     }
-    return new linesurf_result{std::move(r.value())};
+    auto made = std::make_unique<linesurf_result>();
+    made->result = std::move(r.value());
+    made->options = options->options;
+    return made.release();
   });
 }
 
@@ -420,6 +341,18 @@ size_t linesurf_result_num_warnings(const linesurf_result* result) {
 const char* linesurf_result_warning(const linesurf_result* result, size_t index) {
   if (result == nullptr || index >= result->result.warnings.size()) return "";
   return result->result.warnings[index].c_str();
+}
+
+const char* linesurf_result_report_json(const linesurf_result* result, linesurf_error** error) {
+  return Guard(error, [&]() -> const char* {
+    if (result == nullptr) {
+      Fail(error, LINESURF_ERROR_INVALID_INPUT, "linesurf_result_report_json: result is NULL");
+      return nullptr;
+    }
+    auto& r = const_cast<linesurf_result&>(*result);  // the report is made once, then read
+    std::call_once(r.report_made, [&r] { r.report = linesurf::ReportJson(r.result, r.options); });
+    return r.report.c_str();
+  });
 }
 
 linesurf_status linesurf_result_write_mesh(const linesurf_result* result,

@@ -140,7 +140,7 @@ TEST(CApi, BlockOptionsAreCheckedByTheFacade) {
     EXPECT_EQ(e.Message(), "options: 'voxels' is not a value of engine");
   }
   ASSERT_EQ(linesurf_options_set_number(options, "block_margin", -0.5, nullptr), LINESURF_OK);
-  EXPECT_EQ(ReconstructMessage(options).rfind("options: block_margin: ", 0), 0u);
+  EXPECT_EQ(ReconstructMessage(options), "options: block_margin must be in [0, 64]");
   ASSERT_EQ(linesurf_options_set_number(options, "block_margin", 0.25, nullptr), LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_string(options, "engine", "monolithic", nullptr), LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_number(options, "block_size", 3.0, nullptr), LINESURF_OK);
@@ -149,10 +149,10 @@ TEST(CApi, BlockOptionsAreCheckedByTheFacade) {
             "detection.block_size)");
   ASSERT_EQ(linesurf_options_set_string(options, "engine", "blocks", nullptr), LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_number(options, "block_size", -1.0, nullptr), LINESURF_OK);
-  EXPECT_EQ(ReconstructMessage(options), "options: block_size must be finite and >= 0");
+  EXPECT_EQ(ReconstructMessage(options), "options: block_size must be >= 0");
   ASSERT_EQ(linesurf_options_set_number(options, "block_size", 3.0, nullptr), LINESURF_OK);
   ASSERT_EQ(linesurf_options_set_number(options, "block_margin", 65.0, nullptr), LINESURF_OK);
-  EXPECT_EQ(ReconstructMessage(options).rfind("options: block_margin: ", 0), 0u);
+  EXPECT_EQ(ReconstructMessage(options), "options: block_margin must be in [0, 64]");
   linesurf_options_free(options);
 }
 

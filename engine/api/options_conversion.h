@@ -11,17 +11,11 @@
 
 namespace linesurf::api {
 
+[[nodiscard]] pipeline::Engine ToEngine(ComplexEngine engine);
 [[nodiscard]] PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection,
                                                     std::uint64_t seed);
 [[nodiscard]] pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options);
-/// Sets the energy weights of `energy` (the other evidence options stay).
-void SetEngineWeights(const EnergyWeights& weights, pipeline::EnergyOptions& energy);
-void SetEngineQuality(const QualityOptions& quality, pipeline::SurfaceQualityOptions& engine);
 [[nodiscard]] io::SceneReadOptions ToEngineOptions(const ReadOptions& options);
 [[nodiscard]] io::MeshWriteOptions ToEngineOptions(const MeshWriteOptions& options);
-
-/// @return kInvalidOptions naming the first weight outside the engine's [0, 1e6]
-/// (EnergyOptions::Validate, the rule the CLI applies too) as "weights.<name>".
-[[nodiscard]] Status ValidateWeights(const EnergyWeights& weights);
 
 }  // namespace linesurf::api

@@ -1,5 +1,7 @@
 #include "engine/detect/detect_planes.h"
 
+#include "linesurf/option_schema.h"
+
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
@@ -62,24 +64,11 @@ Status Invalid(const std::string& field, const std::string& range) {
 }  // namespace
 
 Status PlaneDetectionOptions::Validate() const {
-  if (epsilon && (!(*epsilon > 0.0) || !std::isfinite(*epsilon))) return Invalid("epsilon", "> 0");
-  if (!(epsilon_over_noise > 0.0 && epsilon_over_noise <= 20.0)) {
-    return Invalid("epsilon_over_noise", "in (0, 20]");
+  if (Status s = ValidateOptionValues(static_cast<const DetectionParameters&>(*this)); !s) {
+    return s;
   }
-  if (relative_epsilon && !(*relative_epsilon > 0.0 && *relative_epsilon < 0.5)) {
-    return Invalid("relative_epsilon", "in (0, 0.5)");
-  }
-  if (!(epsilon_fusion_factor >= 1.0)) return Invalid("epsilon_fusion_factor", ">= 1");
-  if (!(theta_fusion_deg > 0.0 && theta_fusion_deg < 90.0)) {
-    return Invalid("theta_fusion_deg", "in (0, 90)");
-  }
-  if (!(p_fusion >= 0.0 && p_fusion <= 1.0)) return Invalid("p_fusion", "in [0, 1]");
-  if (iterations < 1) return Invalid("iterations", ">= 1");
   if (min_iterations < 1) return Invalid("min_iterations", ">= 1");
   if (!(confidence > 0.0 && confidence < 1.0)) return Invalid("confidence", "in (0, 1)");
-  if (max_planes < 1) return Invalid("max_planes", ">= 1");
-  if (min_support < 2) return Invalid("min_support", ">= 2");
-  if (!(support_gap >= 0.0 && support_gap <= 1000.0)) return Invalid("support_gap", "in [0, 1000]");
   if (max_failed_draws < 1) return Invalid("max_failed_draws", ">= 1");
   if (max_draws_per_candidate < 1) return Invalid("max_draws_per_candidate", ">= 1");
   if (!(min_pair_angle_deg > 0.0 && min_pair_angle_deg < 90.0)) {
@@ -94,12 +83,6 @@ Status PlaneDetectionOptions::Validate() const {
   if (near_window < 1) return Invalid("near_window", ">= 1");
   if (!(near_fraction >= 0.0 && near_fraction <= 1.0)) return Invalid("near_fraction", "in [0, 1]");
   if (max_refit_iterations < 0) return Invalid("max_refit_iterations", ">= 0");
-  if (!(collinear_tolerance >= 0.0 && collinear_tolerance <= 0.5)) {
-    return Invalid("collinear_tolerance", "in [0, 0.5]");
-  }
-  if (!(block_size >= 0.0) || !std::isfinite(block_size)) return Invalid("block_size", ">= 0");
-  if (!(block_halo >= 0.0 && block_halo < 0.5)) return Invalid("block_halo", "in [0, 0.5)");
-  if (block_max_segments < 0) return Invalid("block_max_segments", ">= 0");
   return {};
 }
 

@@ -12,6 +12,7 @@
 #include "engine/core/scene.h"
 #include "engine/core/strong_id.h"
 #include "linesurf/error.h"
+#include "linesurf/options.h"
 #include "linesurf/result.h"  // EpsilonEstimate
 
 namespace linesurf {
@@ -22,46 +23,16 @@ enum class SegmentDistance {
   kMaxEndpoint,   ///< max of the two endpoint distances (the whole segment lies in the slab)
 };
 
-/// Parameters of DetectPlanes. Lengths are in scene units (metres for metric scenes).
-struct PlaneDetectionOptions {
-  /// Inlier tolerance eps (scene units, > 0). Unset (default, `--epsilon auto`): estimated from
-  /// the data (estimate_epsilon.h), so metric scenes, SfM units and noisier clouds need no flag.
-  /// Paper: 2 cm on metric scenes.
-  std::optional<double> epsilon;
-  /// eps auto: eps = epsilon_over_noise x the robust noise scale of the endpoint-to-plane
-  /// residuals ((0, 20]). 2.5: the mean of two endpoint distances of a Gaussian N(0, s^2) segment
-  /// stays under 2.5 s with probability 99.9 %, its distance to a crease line with 99.2 %.
-  double epsilon_over_noise = 2.5;
-  /// If set, eps = relative_epsilon x (scene bounding-box diagonal) instead of `epsilon`. Range
-  /// (0, 0.5).
-  std::optional<double> relative_epsilon;
-  /// Fusion thickness eps_fus as a multiple of eps (paper: 3).
-  double epsilon_fusion_factor = 3.0;
-  /// Fusion: planes closer than this angle may merge (degrees, (0, 90); paper: 10).
-  double theta_fusion_deg = 10.0;
-  /// Fusion: minimum shared support, as a fraction of the smaller plane's inlier count ([0, 1];
-  /// paper: 0.2).
-  double p_fusion = 0.2;
-  /// Maximum number of candidate pairs per plane N_iter (>= 1; paper: 50000). The adaptive stop
-  /// (`confidence`) usually ends the search much earlier.
-  std::int64_t iterations = 50000;
+/// Parameters of DetectPlanes. Lengths are in scene units (metres for metric scenes). The
+/// options a user sets are the facade's DetectionParameters (linesurf/options.h: defaults and
+/// rationale; ranges in linesurf/option_schema.h); the fields here are the engine's own knobs.
+struct PlaneDetectionOptions : DetectionParameters {
   /// Candidates always evaluated per plane before the adaptive stop may end the search (>= 1).
   std::int64_t min_iterations = 512;
   /// Adaptive stop: end the search for a plane once the probability of having missed a plane
   /// better than the current best is below 1 - confidence ((0, 1); 0.999). Its trials are the
   /// valid candidates and the draws of lines more than 2 eps apart (docs/plane_detection.md).
   double confidence = 0.999;
-  /// Maximum number of planes N_max (>= 1; paper: 160).
-  std::int32_t max_planes = 160;
-  /// A plane needs at least this many inlier segments (>= 2; the reference code uses 3).
-  std::int32_t min_support = 3;
-  /// One plane, one piece: when a plane's inliers fall into pieces more than this many median
-  /// line lengths apart and a piece fitted on its own disagrees with the plane (by more than
-  /// eps / 2 at one of its endpoints), the plane keeps only its largest piece (refitted) and the
-  /// others stay free. Stops a plane tilted across two parallel roofs or walls of different
-  /// buildings a few eps apart, which has more inliers than either. [0, 1000]; 0 = off (the
-  /// paper's method). Not in the paper.
-  double support_gap = 8.0;
   /// Bound on failed pair draws (invalid pairs) while searching one plane (>= 1). Replaces the
   /// reference's N_iter x 1e5 draws of its final, failing extraction.
   std::int64_t max_failed_draws = 200000;
@@ -92,33 +63,10 @@ struct PlaneDetectionOptions {
   /// Ablation: segments already on a plane are tested by their plane distance instead of their
   /// distance to the crease line P ∩ P'.
   bool no_structural_condition = false;
-  /// Segments on one infinite line (every endpoint within collinear_tolerance x eps of the
-  /// other's line), such as the per-camera parts of one 3D line in the reference's residual
-  /// inputs, are detected as one line (the span of its parts) and all get its planes: one
-  /// physical line counts once, as in the reference RANSAC, which ran before the split. [0, 0.5];
-  /// 0 = every segment on its own.
-  double collinear_tolerance = 1e-3;
-  /// Per-block detection (DESIGN section 3): when > 0, the scene is cut into cubes of this side
-  /// (scene units); RANSAC runs per cube on the segments whose midpoint lies in the cube dilated
-  /// by the halo, cubes in parallel, then a global fusion merges the pieces of one plane found
-  /// in neighbouring cubes and re-applies the at-most-2 rule. Work grows about linearly with the
-  /// scene; `max_planes` then bounds each block's RANSAC, not the total (a city has thousands),
-  /// and a block whose RANSAC reaches it is split into 8 (docs/plane_detection.md).
-  /// 0 = the whole scene is one block (the monolithic method). A scene that fits in one cube
-  /// gives exactly the monolithic result.
-  double block_size = 0.0;
   /// A block (of a grid, block_size > 0) whose RANSAC reaches max_planes is split into its 8
   /// half-size cubes, detected in its place (docs/plane_detection.md). Off for the eps probes,
   /// which want only each block's largest planes.
   bool split_blocks_at_cap = true;
-  /// Halo of a block, as a fraction of its side ([0, 0.5)).
-  double block_halo = 0.1;
-  /// A block whose midpoints number more than this is split into 8 halves, recursively, so that
-  /// crowded places do not make one block's RANSAC the bottleneck (>= 0; 0 = never split). The
-  /// count is of distinct lines (collinear parts merged). 2,000: a synthetic city has about one
-  /// plane per 15 lines, so a block of 2,400 lines or more reaches max_planes' 160 and runs again
-  /// as its children, its RANSAC lost (docs/plane_detection.md).
-  std::int64_t block_max_segments = 2000;
   /// Seed of all random streams; same input + options + seed => same output, any thread count.
   std::uint64_t seed = 0;
 

@@ -302,15 +302,15 @@ void AddSeamRegularisation(const partition::SeamRegularisation& seams,
     }
     energy.AddParityGroup(cells, group.signs, weight);
   };
-  if (options.edge_weight > 0.0) {
-    for (const auto& group : seams.edges) add(group, options.edge_weight * group.length / sigma);
+  if (options.weights.edge > 0.0) {
+    for (const auto& group : seams.edges) add(group, options.weights.edge * group.length / sigma);
   }
-  if (options.corner_weight > 0.0) {
-    for (const auto& group : seams.vertices) add(group, options.corner_weight);
+  if (options.weights.corner > 0.0) {
+    for (const auto& group : seams.vertices) add(group, options.weights.corner);
   }
 }
 
-/// The price of surface on seams that carry no plane (EnergyOptions::open_seam_weight).
+/// The price of surface on seams that carry no plane (EnergyWeights::open_seam).
 void AddOpenSeamTerms(const BlockComplexes& complexes,
                       const std::vector<std::size_t>& offsets,
                       double weight_per_area,
@@ -346,14 +346,14 @@ Expected<EvidenceResult> ComputeBlockEvidence(const BlockComplexes& complexes,
       AddComplexRegularisation(
           complexes.blocks[b].complex, options, result.stats.sigma, offsets[b], result.energy);
     }
-    if (options.edge_weight > 0.0 || options.corner_weight > 0.0) {
+    if (options.weights.edge > 0.0 || options.weights.corner > 0.0) {
       Expected<partition::SeamRegularisation> seams =
           partition::ComputeSeamRegularisation(complexes, ctx);
       if (!seams) throw LinesurfException(seams.error());
       AddSeamRegularisation(*seams, offsets, options, result.stats.sigma, result.energy);
     }
     const double sigma = result.stats.sigma;
-    AddOpenSeamTerms(complexes, offsets, options.open_seam_weight / (sigma * sigma), result.energy);
+    AddOpenSeamTerms(complexes, offsets, options.weights.open_seam / (sigma * sigma), result.energy);
     ApplyBoundary(complexes, offsets, boundary, result.energy, result.stats);
     result.warnings = EvidenceWarnings(result.stats);
     result.viewpoint_cells = std::move(evidence.viewpoint_cells);

@@ -89,9 +89,9 @@ Scene RandomScene(std::uint64_t seed, int num_planes) {
 EnergyOptions Options() {
   EnergyOptions o;
   o.sigma = 0.25;
-  o.visibility_weight = 0.5;
-  o.edge_weight = 0.05;
-  o.corner_weight = 0.02;
+  o.weights.visibility = 0.5;
+  o.weights.edge = 0.05;
+  o.weights.corner = 0.02;
   return o;
 }
 
@@ -220,9 +220,9 @@ TEST(ComputeBlockEvidence, ARayAcrossASeamCrossesItsSeamFacet) {
   auto cx = partition::BuildBlockComplexes(*grid, {}, partition::RegionsFromBlockLists({}), {}, {});
   ASSERT_TRUE(cx);
   EnergyOptions o = Options();
-  o.visibility_weight = 1.0;
+  o.weights.visibility = 1.0;
   o.sigma = 1.0;
-  o.open_seam_weight = 0.0;  // rays only (no plane lies on any seam here)
+  o.weights.open_seam = 0.0;  // rays only (no plane lies on any seam here)
   auto r = ComputeBlockEvidence(*cx, scene, o, BoundaryMode::kNone, {});
   ASSERT_TRUE(r) << r.error().ToString();
   // Each block is one cell (global id = block index); the viewpoint is in block (0, 1, 1), the
@@ -249,11 +249,11 @@ TEST(ComputeBlockEvidence, OpenSeamsArePricedByAreaAndSeamsWithAPlaneAreNot) {
   const auto grid = partition::BlockGrid::Create(kBox, 2.0);
   ASSERT_TRUE(grid);
   EnergyOptions o = Options();
-  o.visibility_weight = 0.0;
-  o.edge_weight = 0.0;
-  o.corner_weight = 0.0;
+  o.weights.visibility = 0.0;
+  o.weights.edge = 0.0;
+  o.weights.corner = 0.0;
   o.sigma = 0.5;
-  o.open_seam_weight = 3.0;
+  o.weights.open_seam = 3.0;
   for (const bool with_wall : {false, true}) {
     SCOPED_TRACE(with_wall);
     std::vector<Plane3> planes;
@@ -304,7 +304,7 @@ TEST(ComputeBlockEvidence, RaysThroughBlockEdgesAndAlongFacesCrossSeams) {
   EnergyOptions o = Options();
   o.sigma = 1.0;
   o.max_samples_per_segment = 1;
-  o.open_seam_weight = 0.0;  // rays only
+  o.weights.open_seam = 0.0;  // rays only
   auto r = ComputeBlockEvidence(*cx, scene, o, BoundaryMode::kNone, {});
   ASSERT_TRUE(r) << r.error().ToString();
   // First ray: (0,0,1) -> (1,0,1) -> (1,1,1) (x first on the tie); second ray ends on the face

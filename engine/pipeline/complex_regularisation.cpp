@@ -28,20 +28,20 @@ void AddComplexRegularisation(const CellComplex& cx,
     }
     energy.AddParityGroup(cells, signs, weight);
   };
-  if (options.edge_weight > 0.0) {
+  if (options.weights.edge > 0.0) {
     for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
       if (edge_interior[e] == 0) continue;
       const EdgeId id(e);
       const auto& ev = cx.edge_vertices[id];
       const double length = (cx.vertex_points[ev[1]] - cx.vertex_points[ev[0]]).norm();
-      const double weight = options.edge_weight * length / sigma;
+      const double weight = options.weights.edge * length / sigma;
       if (!(weight > 0.0)) continue;
       const auto around = cx.edge_cells[id];
       cells.assign(around.begin(), around.end());
       add_group(weight);
     }
   }
-  if (options.corner_weight > 0.0) {
+  if (options.weights.corner > 0.0) {
     // Vertex -> incident edges (counting sort, edges ascending per vertex).
     std::vector<std::uint32_t> offsets(cx.NumVertices() + 1, 0);
     for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
@@ -64,7 +64,7 @@ void AddComplexRegularisation(const CellComplex& cx,
         cells.insert(cells.end(), around.begin(), around.end());
       }
       if (!interior) continue;
-      add_group(options.corner_weight);
+      add_group(options.weights.corner);
     }
   }
 }

@@ -1,5 +1,7 @@
 #include "engine/pipeline/compute_evidence.h"
 
+#include "linesurf/option_schema.h"
+
 #include "engine/core/median_segment_length.h"
 
 #include <algorithm>
@@ -18,7 +20,6 @@ constexpr const char* kComputeEvidenceStage = "evidence";
 /// Largest fixed-point total: every accumulated cost must stay below it, or the sums wrap.
 constexpr double kFixedPointLimit = 9.2233720368547758e18 / kEvidenceFixedPointScale;  // 2^63 / scale
 /// Largest weight accepted (defaults are 0.01 to 1; beyond this the LP loses all precision).
-constexpr double kMaxWeight = 1e6;
 /// Smallest sigma, as a fraction of the box diagonal: finer scales resolve nothing and make the
 /// per-length costs (edge weight * length / sigma) overflow.
 constexpr double kMinSigmaRelative = 1e-9;
@@ -71,7 +72,7 @@ void ApplyBoundary(const CellComplex& cx, BoundaryMode boundary, solver::EnergyI
 }  // namespace
 
 double CreaseWeight(const EnergyOptions& options, BoundaryMode boundary) {
-  if (options.crease_weight) return *options.crease_weight;
+  if (options.weights.crease) return *options.weights.crease;
   return boundary == BoundaryMode::kInterior ? kInteriorCreaseWeight : 0.0;
 }
 
@@ -79,19 +80,7 @@ Status EnergyOptions::Validate() const {
   const auto bad = [](const char* field, const std::string& why) -> Status {
     return Error{ErrorCode::kInvalidOptions, "energy_options", std::string(field) + " " + why};
   };
-  const std::pair<const char*, double> weights[] = {
-      {"textural_weight", textural_weight},
-      {"structural_weight", structural_weight},
-      {"crease_weight", crease_weight.value_or(0.0)},
-      {"visibility_weight", visibility_weight},
-      {"edge_weight", edge_weight},
-      {"corner_weight", corner_weight},
-      {"area_weight", area_weight},
-      {"viewpoint_prior_weight", viewpoint_prior_weight},
-      {"open_seam_weight", open_seam_weight}};
-  for (const auto& [name, w] : weights) {
-    if (!(w >= 0.0 && w <= kMaxWeight)) return bad(name, "must be in [0, 1e6]");
-  }
+  if (Status s = ValidateOptionValues(weights); !s) return s;
   if (sigma && !(std::isfinite(*sigma) && *sigma > 0.0)) return bad("sigma", "must be > 0");
   if (!(samples_per_sigma > 0.0 && samples_per_sigma <= 1000.0)) {
     return bad("samples_per_sigma", "must be in (0, 1000]");
@@ -125,11 +114,11 @@ Status CheckEnergyScale(const Scene& scene, const Box3& box, const EnergyOptions
     length_views += length * static_cast<double>(scene.observations[SegmentId(s)].size());
   }
   const double weight =
-      std::max({options.textural_weight, options.structural_weight, options.visibility_weight});
+      std::max({options.weights.textural, options.weights.structural, options.weights.visibility});
   // A structural segment feeds its group and the visibility of its rays: at most 2 terms.
   const double total =
       2.0 * weight * length_views / sigma +
-      options.viewpoint_prior_weight * static_cast<double>(scene.observations.NumItems());
+      options.weights.viewpoint_prior * static_cast<double>(scene.observations.NumItems());
   if (!(total < kFixedPointLimit)) {
     why << "sigma " << sigma << " with weights up to " << weight << " gives evidence totals of "
         << total << ", beyond the " << kFixedPointLimit

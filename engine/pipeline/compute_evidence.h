@@ -36,41 +36,16 @@
 #include "engine/core/run_context.h"
 #include "engine/core/scene.h"
 #include "linesurf/error.h"
+#include "linesurf/options.h"
 #include "solver/energy/energy_input.h"
 
 namespace linesurf::pipeline {
 
 struct EnergyOptions {
-  /// Weight of the textural primitive term (>= 0). Paper and reference: 1 (hard-wired there).
-  double textural_weight = 1.0;
-  /// Weight of the structural primitive term (>= 0). Paper: 1 (the reference's -cp).
-  double structural_weight = 1.0;
-  /// Weight of the crease term of structural segments (>= 0), per length / sigma and shared by
-  /// the segment's views: a structural segment says the surface turns at its crease, so the
-  /// labellings that put it on a flat surface of one of its planes pay this (the paper's
-  /// structural term only asks that one cell around the crease be full; 0 = the paper's energy).
-  /// Unset: CreaseWeight's default for the boundary mode.
-  std::optional<double> crease_weight;
-  /// Visibility weight lambda_vis (>= 0). 1, as the reference's Andalusian demo (paper: 0.1):
-  /// at 0.1 cells behind a lone textural segment that few sight rays cross stay full (slabs and
-  /// fragments on Andalusian, docs/results.md); measured better on every synthetic scene too.
-  double visibility_weight = 1.0;
-  /// Edge regularisation lambda_edge (>= 0), per length / sigma. 0.1, as the Andalusian demo
-  /// (paper: 0.01); chosen with the visibility weight (docs/results.md).
-  double edge_weight = 0.1;
-  /// Corner regularisation lambda_corner (>= 0), per corner. 0.1, as the Andalusian demo (paper:
-  /// 0.01).
-  double corner_weight = 0.1;
-  /// Surface area weight (>= 0), per area / sigma^2. Default 0: lines are too sparse for it.
-  double area_weight = 0.0;
-  /// Block engine only (>= 0), per area / sigma^2: surface on a block face that carries no
-  /// plane (a seam between blocks, not a detected surface) costs this much. Such facets let the
-  /// labelling close a solid where support regions end; unpriced, a solid of block faces costs
-  /// nothing there (a box of blocks instead of a house).
-  double open_seam_weight = 1.0;
-  /// Viewpoint prior (>= 0): cost per observation when the viewpoint's cell is full. The
-  /// reference uses 1.
-  double viewpoint_prior_weight = 1.0;
+  /// The weights of the terms, the facade's own struct (linesurf/options.h, where their defaults
+  /// and rationale are; their ranges are linesurf/option_schema.h's). An unset crease weight is
+  /// CreaseWeight's default for the boundary mode.
+  EnergyWeights weights;
   /// Scale sigma (scene units, > 0, at least 1e-9 of the box diagonal, and large enough that
   /// the total evidence weight x length / sigma x views stays below 2^31: ComputeEvidence
   /// checks both). Unset: the median segment length of the scene (about 1 m on Andalusian,

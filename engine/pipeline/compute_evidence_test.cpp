@@ -32,9 +32,9 @@ Scene OneSegmentScene(const Segment3& segment, const std::vector<Plane3>& planes
 EnergyOptions UnitOptions() {
   EnergyOptions o;
   o.sigma = 1.0;
-  o.visibility_weight = 1.0;
-  o.edge_weight = 0.0;
-  o.corner_weight = 0.0;
+  o.weights.visibility = 1.0;
+  o.weights.edge = 0.0;
+  o.weights.corner = 0.0;
   return o;
 }
 
@@ -116,9 +116,9 @@ TEST(ComputeEvidence, CreaseTermChargesOnlyTheFlatLabellingsThroughTheSegment) {
                       {Plane3{Vec3(2, 0, 0), Vec3::UnitX()}, Plane3{Vec3(0, 2, 0), Vec3::UnitY()}},
                       Vec3(0.5, 0.5, 1.5));
   EnergyOptions with = UnitOptions();
-  with.crease_weight = 0.5;
+  with.weights.crease = 0.5;
   EnergyOptions without = UnitOptions();
-  without.crease_weight = 0.0;
+  without.weights.crease = 0.0;
   const EvidenceResult r = Compute(g, scene, with);
   const EvidenceResult paper = Compute(g, scene, without);
   EXPECT_EQ(r.stats.crease_weight, 0.5);
@@ -142,9 +142,9 @@ TEST(ComputeEvidence, CreaseWeightDefaultsByTheBoundary) {
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kInterior), kInteriorCreaseWeight);
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kExterior), 0.0);
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kNone), 0.0);
-  o.crease_weight = 0.7;
+  o.weights.crease = 0.7;
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kExterior), 0.7);
-  o.crease_weight = -1.0;
+  o.weights.crease = -1.0;
   EXPECT_FALSE(o.Validate());
 }
 
@@ -164,8 +164,8 @@ TEST(ComputeEvidence, RegularisationAndBoundary) {
   Scene scene;
   scene.observations.Clear();
   EnergyOptions o = UnitOptions();
-  o.edge_weight = 0.5;
-  o.corner_weight = 0.25;
+  o.weights.edge = 0.5;
+  o.weights.corner = 0.25;
   RunContext ctx;
   auto r = ComputeEvidence(g.complex(), scene, o, BoundaryMode::kExterior, ctx);
   ASSERT_TRUE(r.has_value()) << r.error().ToString();
@@ -216,10 +216,10 @@ TEST(ComputeEvidence, IdenticalForAnyThreadCount) {
 
 TEST(EnergyOptions, ValidateNamesTheBadField) {
   EnergyOptions o;
-  o.visibility_weight = -1.0;
+  o.weights.visibility = -1.0;
   const Status s = o.Validate();
   ASSERT_FALSE(s.has_value());
-  EXPECT_NE(s.error().message.find("visibility_weight"), std::string::npos);
+  EXPECT_NE(s.error().message.find("weights.visibility"), std::string::npos);
   o = EnergyOptions{};
   o.sigma = 0.0;
   EXPECT_FALSE(o.Validate().has_value());

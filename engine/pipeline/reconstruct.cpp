@@ -1,5 +1,7 @@
 #include "engine/pipeline/reconstruct.h"
 
+#include "linesurf/option_schema.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -100,7 +102,7 @@ Status ReconstructOptions::Validate() const {
   if (Status s = detection_blocks.Validate(); !s) return s;
   if (Status s = ValidateEngineBlockSize(engine, blocks.block_size); !s) return s;
   if (Status s = ValidateMergeCoplanar(engine, merge_coplanar, triangulate); !s) return s;
-  if (Status s = quality.Validate(); !s) return s;
+  if (Status s = ValidateOptionValues(quality); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
                  "box_margin must be in (0, 10]"};
@@ -311,8 +313,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
         std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
     CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labeling.labels, facts);
     const EnergyOptions& e = options.energy;
-    facts.has_data_weight = e.textural_weight > 0.0 || e.structural_weight > 0.0 ||
-                            e.visibility_weight > 0.0 || e.viewpoint_prior_weight > 0.0;
+    facts.has_data_weight = e.weights.textural > 0.0 || e.weights.structural > 0.0 ||
+                            e.weights.visibility > 0.0 || e.weights.viewpoint_prior > 0.0;
     facts.sigma = evidence.stats.sigma;
     facts.samples = evidence.stats.samples;
     facts.grazing_samples = evidence.stats.grazing_samples;

@@ -141,8 +141,8 @@ void AddTextural(const Context& c, SegmentId s, const Plane3& plane, double leng
   if (length <= kMinProjectedLengthRelative * c.sigma) return;
   const std::int32_t k_samples = NumSamples(c, length);
   const double per_sample = length / (k_samples * c.sigma);
-  const std::int64_t w_tex = ToFixed(c.options.textural_weight * per_sample);
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
+  const std::int64_t w_tex = ToFixed(c.options.weights.textural * per_sample);
+  const std::int64_t w_vis = ToFixed(c.options.weights.visibility * per_sample);
   const Vec3& n = plane.normal;
   const std::array<Vec3, 1> ties_plus{n};
   const std::array<Vec3, 1> ties_minus{-n};
@@ -204,12 +204,12 @@ void AddStructural(
   }
   const std::int32_t k_samples = NumSamples(c, length);
   const double per_sample = length / (k_samples * c.sigma);
-  const std::int64_t w_str = ToFixed(c.options.structural_weight * per_sample);
+  const std::int64_t w_str = ToFixed(c.options.weights.structural * per_sample);
   const auto views = c.scene.observations[s];
   // Per segment, shared by its views: the crease is a property of the segment.
   const std::int64_t w_crease =
       views.empty() ? 0 : ToFixed(c.crease_weight * per_sample / views.size());
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * per_sample);
+  const std::int64_t w_vis = ToFixed(c.options.weights.visibility * per_sample);
   std::array<CellId, 4> previous{};
   for (std::int32_t k = 0; k < k_samples; ++k) {
     const Vec3 q = a + ((k + 0.5) / k_samples) * (b - a);
@@ -269,7 +269,7 @@ void AddVisibilityOnly(const Context& c, SegmentId s) {
   const double length = seg.Length();
   if (length <= 0.0) return;
   const std::int32_t k_samples = NumSamples(c, length);
-  const std::int64_t w_vis = ToFixed(c.options.visibility_weight * length / (k_samples * c.sigma));
+  const std::int64_t w_vis = ToFixed(c.options.weights.visibility * length / (k_samples * c.sigma));
   const auto views = c.scene.observations[s];
   CellId hint;
   for (std::int32_t k = 0; k < k_samples; ++k) {
@@ -444,7 +444,7 @@ IntegratedEvidence IntegrateSegments(const EvidenceSpace& space,
   LINESURF_THROW_IF(stopped.load(), kCancelled, kSegmentEvidenceStage, "cancelled");
 
   // Viewpoint prior, per observation.
-  const std::int64_t w_prior = ToFixed(options.viewpoint_prior_weight);
+  const std::int64_t w_prior = ToFixed(options.weights.viewpoint_prior);
   for (const ViewpointId v : scene.observations.items()) {
     const CellId cell = viewpoint_cells[v];
     if (cell.IsValid()) {
@@ -485,7 +485,7 @@ void AddIntegratedTerms(const EvidenceSpace& space,
     energy.cost_if_empty[CellId(i)] = FromFixed(evidence.cost_if_empty[i]);
     energy.cost_if_full[CellId(i)] = FromFixed(evidence.cost_if_full[i]);
   }
-  const double area_scale = options.area_weight / (sigma * sigma);
+  const double area_scale = options.weights.area / (sigma * sigma);
   for (std::size_t f = 0; f < space.NumFacets(); ++f) {
     const auto [a, b] = space.FacetCells(f);
     if (!a.IsValid() || !b.IsValid()) continue;

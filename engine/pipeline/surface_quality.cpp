@@ -1,5 +1,7 @@
 #include "engine/pipeline/surface_quality.h"
 
+#include "linesurf/option_schema.h"
+
 #include "engine/core/box_bvh.h"
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
@@ -27,7 +29,6 @@ constexpr const char* kSurfaceQualityStage = "surface_quality";
 constexpr std::size_t kSegmentGrain = 64;
 /// Planes per parallel task of the off-surface search.
 constexpr std::size_t kPlaneGrain = 16;
-constexpr int kMaxSamplesPerSegment = 1024;
 /// A vertex no kept face uses.
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 /// A removed component's new id.
@@ -473,26 +474,10 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
 
 }  // namespace
 
-Status SurfaceQualityOptions::Validate() const {
-  if (!(fit_factor > 0.0 && std::isfinite(fit_factor))) {
-    return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "fit_factor must be > 0"};
-  }
-  if (min_lines_per_component < 0) {
-    return Error{
-        ErrorCode::kInvalidOptions, kSurfaceQualityStage, "min_lines_per_component must be >= 0"};
-  }
-  if (samples_per_segment < 1 || samples_per_segment > kMaxSamplesPerSegment) {
-    return Error{ErrorCode::kInvalidOptions,
-                 kSurfaceQualityStage,
-                 "samples_per_segment must be in [1, 1024]"};
-  }
-  return {};
-}
-
 namespace {
 
 Status ValidateArguments(const SurfaceQualityOptions& options, double epsilon) {
-  if (Status s = options.Validate(); !s) return s;
+  if (Status s = ValidateOptionValues(options); !s) return s;
   if (!(epsilon > 0.0 && std::isfinite(epsilon))) {
     return Error{ErrorCode::kInvalidOptions, kSurfaceQualityStage, "epsilon must be > 0"};
   }

@@ -7,6 +7,7 @@
 /// --lines` and the `reconstruct` report.
 
 #include "linesurf/error.h"
+#include "linesurf/options.h"
 #include "linesurf/result.h"
 
 #include "engine/core/polygon_mesh.h"
@@ -18,20 +19,9 @@
 
 namespace linesurf::pipeline {
 
-struct SurfaceQualityOptions {
-  /// A segment sample lies on the surface when within fit_factor x eps of it (> 0; 2, the width
-  /// of the inlier slab plus the surface's own tolerance).
-  double fit_factor = 2.0;
-  /// Each segment is integrated at this many midpoint samples of equal sub-segments (1..1024).
-  /// 8: shares to 1/8 of a segment, whatever the units.
-  int samples_per_segment = 8;
-  /// A component holding fewer distinct supported lines than this is a floating fragment (>= 0;
-  /// 3, the fewest a detected plane has): a slab on a plane of two outliers holds a few segments,
-  /// and with a residual split each of its lines counts once, not once per camera.
-  int min_lines_per_component = 3;
-
-  [[nodiscard]] Status Validate() const;
-};
+/// The facade's struct (linesurf/options.h: defaults and rationale; ranges in
+/// linesurf/option_schema.h).
+using SurfaceQualityOptions = ::linesurf::QualityOptions;
 
 /// The figures (linesurf/result.h).
 using ComponentQuality = ::linesurf::ComponentQuality;

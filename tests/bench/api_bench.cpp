@@ -75,7 +75,7 @@ void BM_CancelLatencyAndalusian(benchmark::State& state) {
   if (!scene) return state.SkipWithError("LINESURF_SHARED_DIR/data/andalusian is absent");
   const double at = static_cast<double>(state.range(0)) / 100.0;
   ReconstructOptions options;
-  options.planes = PlaneSource::kGiven;
+  options.plane_source = PlaneSource::kGiven;
   for (auto _ : state) {
     std::atomic<bool> cancel{false};
     std::chrono::steady_clock::time_point requested;

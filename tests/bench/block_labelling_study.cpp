@@ -236,8 +236,8 @@ int SceneStudy(const char* path,
       return 2;
     }
     input = bench::CropScene(input, Vec3(b[0], b[1], b[2]), Vec3(b[3], b[4], b[5]));
-    o.energy.textural_weight = o.energy.structural_weight = o.energy.visibility_weight = 1.0;
-    o.energy.edge_weight = o.energy.corner_weight = 0.1;
+    o.energy.weights.textural = o.energy.weights.structural = o.energy.weights.visibility = 1.0;
+    o.energy.weights.edge = o.energy.weights.corner = 0.1;
     o.energy.sigma = 1.0;
     scene = Take(pipeline::SanitizeScene(std::move(input), o.sanitize)).scene;
   } else if (planes == "given") {

@@ -226,11 +226,11 @@ int Andalusian(const char* path, const char* box, double cbc_seconds) {
   pipeline::ReconstructOptions o;
   o.use_given_planes = true;
   o.scene_mode = pipeline::SceneMode::kExterior;
-  o.energy.textural_weight = 1.0;
-  o.energy.structural_weight = 1.0;
-  o.energy.visibility_weight = 1.0;
-  o.energy.edge_weight = 0.1;
-  o.energy.corner_weight = 0.1;
+  o.energy.weights.textural = 1.0;
+  o.energy.weights.structural = 1.0;
+  o.energy.weights.visibility = 1.0;
+  o.energy.weights.edge = 0.1;
+  o.energy.weights.corner = 0.1;
   o.energy.sigma = 1.0;
   std::printf("crop: %zu segments, %zu planes\n\n", crop.NumSegments(), crop.planes.size());
   std::fflush(stdout);

@@ -1,6 +1,7 @@
 // Runs `linesurf info` and `linesurf convert` as a user would and checks output and exit codes.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <string>
@@ -143,7 +144,9 @@ TEST_F(CliIo, ConfigFileSetsOptionsAndTheReportHoldsTheEffectiveOnes) {
   const CliRun synth =
       RunLinesurf("-q synth cube --seed 1 -o " + Quote((dir_ / "cube").string()), dir_);
   ASSERT_EQ(synth.exit_code, 0) << synth.err;
-  WriteText(dir_ / "config.json", R"({"epsilon": 0.06, "max_planes": 5, "seed": 9})");
+  // Keys are the options' paths, nested or dotted.
+  WriteText(dir_ / "config.json",
+            R"({"detection": {"epsilon": 0.06}, "detection.max_planes": 5, "seed": 9})");
   const std::string input = Quote((dir_ / "cube" / "lines.json").string());
   const std::string config = " --config " + Quote((dir_ / "config.json").string());
   CliRun r = RunLinesurf("detect " + input + config + " --max-planes 4 -o " +
@@ -151,32 +154,34 @@ TEST_F(CliIo, ConfigFileSetsOptionsAndTheReportHoldsTheEffectiveOnes) {
                              Quote((dir_ / "r.json").string()),
                          dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::string report = Slurp(dir_ / "r.json");
-  EXPECT_NE(report.find("\"epsilon\": 0.06,"), std::string::npos) << report;  // from the file
-  EXPECT_NE(report.find("\"max_planes\": 4,"), std::string::npos) << report;  // flag wins
-  EXPECT_NE(report.find("\"seed\": 9"), std::string::npos) << report;
-  EXPECT_NE(report.find("\"block_halo\": 0.1,"), std::string::npos) << report;  // a default
+  nlohmann::json report = nlohmann::json::parse(Slurp(dir_ / "r.json"));
+  EXPECT_EQ(report["options"]["detection"]["epsilon"], 0.06) << report;  // from the file
+  EXPECT_EQ(report["options"]["detection"]["max_planes"], 4) << report;  // flag wins
+  EXPECT_EQ(report["options"]["seed"], 9) << report;
+  EXPECT_EQ(report["options"]["detection"]["block_halo"], 0.1) << report;  // a default
   EXPECT_NE(r.err.find("4 planes"), std::string::npos) << r.err;
   // reconstruct: the same options, its own, and the detection ones in one report.
-  WriteText(dir_ / "rconfig.json", R"({"epsilon": 0.06, "scene": "exterior", "w_edge": 0.5})");
+  WriteText(dir_ / "rconfig.json",
+            R"({"detection.epsilon": 0.06, "scene_mode": "exterior", "weights": {"edge": 0.5}})");
   r = RunLinesurf("reconstruct " + input + " --config " +
                       Quote((dir_ / "rconfig.json").string()) + " -o " +
                       Quote((dir_ / "m.ply").string()) + " --report " +
                       Quote((dir_ / "rr.json").string()),
                   dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  report = Slurp(dir_ / "rr.json");
-  EXPECT_NE(report.find("\"scene\": \"exterior\","), std::string::npos) << report;
-  EXPECT_NE(report.find("\"w_edge\": 0.5,"), std::string::npos) << report;
-  EXPECT_NE(report.find("\"epsilon\": 0.06,"), std::string::npos) << report;
-  EXPECT_NE(report.find("\"planes\": \"detect\","), std::string::npos) << report;
+  report = nlohmann::json::parse(Slurp(dir_ / "rr.json"));
+  EXPECT_EQ(report["options"]["scene_mode"], "exterior") << report;
+  EXPECT_EQ(report["options"]["weights"]["edge"], 0.5) << report;
+  EXPECT_EQ(report["options"]["detection"]["epsilon"], 0.06) << report;
+  EXPECT_EQ(report["options"]["plane_source"], "detect") << report;
+  EXPECT_EQ(report["output_options"]["ascii"], false) << report;
   // A key no option has is a usage error naming it; a missing file is invalid input.
-  WriteText(dir_ / "bad.json", R"({"epsilon": 0.06, "w_edges": 0.5})");
+  WriteText(dir_ / "bad.json", R"({"detection.epsilon": 0.06, "weights": {"edges": 0.5}})");
   r = RunLinesurf("reconstruct " + input + " --config " + Quote((dir_ / "bad.json").string()) +
                       " -o " + Quote((dir_ / "m2.ply").string()),
                   dir_);
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("bad.json: 'w_edges' is not an option of this command"),
+  EXPECT_NE(r.err.find("bad.json: 'weights.edges' is not an option of this command"),
             std::string::npos)
       << r.err;
   r = RunLinesurf("detect " + input + " --config nothing.json -o " +

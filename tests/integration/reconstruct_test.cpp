@@ -173,7 +173,7 @@ TEST(Reconstruct, CreaseTermKeepsTheUntexturedInnerWallsOfAFloor) {
   EXPECT_EQ(with.stats.crease_weight, pipeline::kInteriorCreaseWeight);
   ExpectGood(s, with);
   pipeline::ReconstructOptions paper = Options(pipeline::SceneMode::kAuto);
-  paper.energy.crease_weight = 0.0;
+  paper.energy.weights.crease = 0.0;
   const pipeline::ReconstructResult without = RunReconstruct(s.scene, paper);
   EXPECT_EQ(without.stats.crease_weight, 0.0);
   const double kept = completeness(with);
@@ -349,7 +349,7 @@ TEST(Reconstruct, BlockEngineWithSmallBlocksKeepsTheDetectionAndNeverClosesSilen
   // The old coupling, forced (detection in the partition's 3 m cubes, open seams unpriced): the
   // run must say that its surface lies on block faces.
   o.planes.block_size = 3.0;
-  o.energy.open_seam_weight = 0.0;
+  o.energy.weights.open_seam = 0.0;
   const pipeline::ReconstructResult boxed = RunReconstruct(s.scene, o);
   EXPECT_LT(boxed.stats.planes, mono.stats.planes);
   EXPECT_TRUE(HasOpenSeamWarning(boxed));

@@ -89,7 +89,7 @@ FacadeCase SceneCase(std::string name,
     SceneData scene = CubeData();
     spoil(scene);
     ReconstructOptions o = ExteriorOptions();
-    o.planes = planes;
+    o.plane_source = planes;
     return OutcomeOf(Reconstruct(scene.View(), o));
   };
   return {std::move(name), run, expected, std::move(message)};
@@ -291,8 +291,8 @@ std::vector<FacadeCase> FacadeCases() {
       "scene_mode"));
   add(OptionCase(
       "planes_out_of_enum",
-      [](ReconstructOptions& o) { o.planes = static_cast<PlaneSource>(5); },
-      "planes"));
+      [](ReconstructOptions& o) { o.plane_source = static_cast<PlaneSource>(5); },
+      "plane_source"));
   add(DetectOptionCase(
       "detect_epsilon_zero", [](DetectOptions& o) { o.detection.epsilon = 0.0; }, "epsilon"));
   add(DetectOptionCase(

@@ -85,13 +85,13 @@ std::vector<ApiCase> ApiCases() {
   o.energy.sigma = 1e-9;
   add("sigma_1e_9", CubeScene(), o, ErrorCode::kInvalidOptions);
   o = ExteriorEngineOptions();
-  o.energy.edge_weight = 1e308;
+  o.energy.weights.edge = 1e308;
   add("edge_weight_1e308", CubeScene(), o, ErrorCode::kInvalidOptions);
   o = ExteriorEngineOptions();
-  o.energy.visibility_weight = std::numeric_limits<double>::infinity();
+  o.energy.weights.visibility = std::numeric_limits<double>::infinity();
   add("visibility_weight_inf", CubeScene(), o, ErrorCode::kInvalidOptions);
   o = ExteriorEngineOptions();
-  o.energy.textural_weight = 1e6;  // the largest weight, with sigma at its smallest allowed ratio
+  o.energy.weights.textural = 1e6;  // the largest weight, with sigma at its smallest allowed ratio
   o.energy.sigma = 1e-8;
   add("evidence_beyond_fixed_point", CubeScene(), o, ErrorCode::kInvalidOptions);
   o = ExteriorEngineOptions();

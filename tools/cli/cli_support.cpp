@@ -92,7 +92,7 @@ int CheckStandardOutput(int code) {
 }
 
 Status WriteReport(const std::filesystem::path& path,
-                   const nlohmann::json& report,
+                   const nlohmann::ordered_json& report,
                    const std::string& stage) {
   std::ofstream out(path);
   out << report.dump(2) << "\n";

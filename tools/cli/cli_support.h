@@ -51,7 +51,7 @@ void PrintWarning(const CommonOptions& common, const std::string& message);
 /// Writes a run report (`--report`) as indented JSON; a file that cannot be written is an
 /// invalid-input error of `stage` naming it.
 Status WriteReport(const std::filesystem::path& path,
-                   const nlohmann::json& report,
+                   const nlohmann::ordered_json& report,
                    const std::string& stage);
 /// Flushes stdout; when anything printed there was lost (e.g. a full device), reports it and
 /// turns a successful `code` into kExitInvalidInput, so a lost output is never exit 0.

@@ -3,7 +3,7 @@
 #include "linesurf/linesurf.h"
 
 #include "tools/cli/commands.h"
-#include "tools/cli/detection_options.h"
+#include "tools/cli/option_registry.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
 
@@ -26,45 +26,19 @@ struct DetectArgs {
 /// Above this many segments, a whole-scene detection gets a hint about per-block detection.
 constexpr std::size_t kLargeSceneSegments = 50000;
 
-/// The run report: options, statistics and every plane's inlier count and total length (plane
-/// i is plane i of the output JSON).
-nlohmann::json DetectReportJson(const CommonOptions& common,
-                                const DetectArgs& args,
-                                const DetectedScene& r) {
-  const DetectStats& st = r.detection.stats;
-  nlohmann::json j;
+/// The library's report (report.h) with the paths read and written.
+nlohmann::ordered_json CliReportJson(const DetectArgs& args, const DetectedScene& r) {
+  nlohmann::ordered_json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
-  j["options"] = args.registry->Effective();
-  j["options"]["threads"] = common.threads;
-  j["stats"] = {{"segments", r.scene.segments.size()},
-                {"lines", st.lines},
-                {"epsilon", st.epsilon},
-                {"epsilon_estimate", EpsilonJson(st.epsilon_estimate)},
-                {"blocks", st.blocks},
-                {"planes_before_fusion", st.planes_before_fusion},
-                {"planes", st.planes},
-                {"merges", st.merges},
-                {"memberships_dropped", st.memberships_dropped},
-                {"capped_blocks", st.capped_blocks},
-                {"segments_with_0_planes", st.segments_with_0_planes},
-                {"segments_with_1_plane", st.segments_with_1_plane},
-                {"segments_with_2_planes", st.segments_with_2_planes},
-                {"candidates_evaluated", st.candidates_evaluated},
-                {"failed_draws", st.failed_draws},
-                {"seconds", st.seconds},
-                {"seconds_fusion", st.seconds_fusion}};
-  nlohmann::json planes = nlohmann::json::array();
-  for (const PlaneSupportInfo& support : r.detection.support) {
-    planes.push_back(
-        {{"inlier_count", support.inlier_count}, {"inlier_length", support.inlier_length}});
-  }
-  j["planes"] = std::move(planes);
+  j.update(nlohmann::ordered_json::parse(ReportJson(r.detection, args.options)));
   return j;
 }
 
 int RunDetect(const CommonOptions& common, DetectArgs& args) {
+  args.options.num_threads = common.threads;
   if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
+  if (Status s = args.options.Validate(); !s) return ReportError(s.error());
   OutputFiles files("detect");
   args.source.AddInputsTo(files);
   files.AddOutput("-o", args.output, kJsonExtensions);
@@ -78,9 +52,8 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   if (args.options.detection.block_size <= 0.0 && input_segments > kLargeSceneSegments) {
     PrintWarning(common, std::to_string(input_segments) +
                              " segments detected as one block: this grows faster than linearly; "
-                             "--block-size (e.g. the size of one building) keeps it linear");
+                             "--detect-block-size (e.g. the size of one building) keeps it linear");
   }
-  args.options.num_threads = common.threads;
   Expected<DetectedScene> detected =
       DetectScenePlanes(read->scene, args.options, CliRunControl(common));
   if (!detected) return ReportError(detected.error(), args.source.input);
@@ -89,7 +62,7 @@ int RunDetect(const CommonOptions& common, DetectArgs& args) {
   const DetectStats& st = detected->detection.stats;
   const std::size_t given_planes = detected->given_planes;
   if (!args.report.empty()) {
-    const nlohmann::json report = DetectReportJson(common, args, *detected);
+    const nlohmann::ordered_json report = CliReportJson(args, *detected);
     if (Status s = files.Write(
             args.report, [&](const auto& path) { return WriteReport(path, report, "detect"); });
         !s) {
@@ -151,8 +124,7 @@ Command AddDetectCommand(CLI::App& app, CommonOptions& common) {
   sub->add_option("-o,--output", args->output, "Output reference JSON with planes and plane_index")
       ->required();
   args->registry = std::make_unique<OptionRegistry>(*sub);
-  RegisterDetectionOptions(*args->registry, args->options.detection);
-  args->registry->Add("seed", args->options.seed, "Random seed");
+  args->registry->AddOptions(args->options, {"num_threads"});  // num_threads: the global -j
   sub->add_option("--vg", args->vg, "Also write the planes as PolyFit/abspy vertex groups");
   sub->add_option("--report", args->report,
                   "Write the run report (JSON: options, statistics, inlier count and length of "

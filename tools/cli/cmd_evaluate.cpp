@@ -1,6 +1,8 @@
 // `linesurf evaluate RESULT [GT] [--lines INPUT]`: precision/completeness against a ground-truth
 // mesh and topology; figures without ground truth against the input segments.
 
+#include "linesurf/report.h"
+
 #include "engine/detect/estimate_epsilon.h"
 #include "engine/io/mesh_io.h"
 #include "engine/io/read_scene.h"
@@ -8,12 +10,10 @@
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/surface_quality.h"
 #include "tools/cli/commands.h"
-#include "tools/cli/detection_options.h"
 #include "tools/cli/engine_run_context.h"
-#include "tools/cli/mesh_validity_json.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
-#include "tools/cli/surface_quality_json.h"
+#include "tools/cli/surface_quality_summary.h"
 #include "tools/eval/evaluate_mesh.h"
 
 #include <chrono>
@@ -85,7 +85,7 @@ nlohmann::json ToJson(const EvaluateArgs& args, const EvaluationResult& r) {
           {"num_visible_gt_samples", r.num_visible_gt_samples},
           {"result_area", r.result_area},
           {"gt_area", r.gt_area},
-          {"topology", MeshValidityJson(r.topology)}};
+          {"topology", nlohmann::json::parse(ReportJson(r.topology))}};
 }
 
 void PrintTable(const EvaluateArgs& args, const EvaluationResult& r) {
@@ -175,7 +175,7 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
                   SurfaceQualitySummary(*quality, "  ").c_str());
     }
     json["lines"] = args.lines_path;
-    json["quality"] = SurfaceQualityJson(*quality);
+    json["quality"] = nlohmann::json::parse(ReportJson(*quality));
   }
   json["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (args.json_path == "-") std::cout << json.dump(2) << "\n";

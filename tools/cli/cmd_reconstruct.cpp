@@ -4,12 +4,10 @@
 #include "linesurf/linesurf.h"
 
 #include "tools/cli/commands.h"
-#include "tools/cli/detection_options.h"
-#include "tools/cli/mesh_validity_json.h"
-#include "tools/cli/option_checks.h"
+#include "tools/cli/option_registry.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
-#include "tools/cli/surface_quality_json.h"
+#include "tools/cli/surface_quality_summary.h"
 
 #include <cmath>
 #include <cstdio>
@@ -22,6 +20,9 @@
 namespace linesurf::cli {
 namespace {
 
+/// The command's own options, beside the library's, in the report's output_options.
+const std::vector<std::string> kOutputOptionKeys = {"ascii", "cityjson", "crs"};
+
 struct ReconstructArgs {
   SceneInputArgs source;
   std::string output;
@@ -33,87 +34,21 @@ struct ReconstructArgs {
   std::unique_ptr<OptionRegistry> registry;  ///< flags, --config and the report's options
 };
 
-nlohmann::json ReportJson(const ReconstructArgs& args, const ReconstructResult& r) {
-  const ReconstructStats& s = r.stats;
-  nlohmann::json j;
+/// The library's report (report.h) with the paths read and written and the command's own
+/// output options.
+nlohmann::ordered_json CliReportJson(const ReconstructArgs& args, const ReconstructResult& r) {
+  nlohmann::ordered_json j;
   j["input"] = args.source.input;
   j["output"] = args.output;
-  j["options"] = args.registry->Effective();
-  j["options"]["threads"] = args.options.num_threads;
-  nlohmann::json stages = nlohmann::json::object();
-  for (const auto& [name, seconds] : s.stage_seconds) stages[name] = seconds;
-  j["stage_seconds"] = stages;
-  j["total_seconds"] = s.total_seconds;
-  j["counts"] = {{"input_segments", s.input_segments},
-                 {"segments", s.segments},
-                 {"viewpoints", s.viewpoints},
-                 {"observations", s.observations},
-                 {"planes", s.planes},
-                 {"capped_blocks", s.capped_blocks},
-                 {"segments_with_0_planes", s.segments_with_planes[0]},
-                 {"segments_with_1_plane", s.segments_with_planes[1]},
-                 {"segments_with_2_planes", s.segments_with_planes[2]},
-                 {"planes_in_complex", s.planes_in_complex},
-                 {"blocks", s.blocks},
-                 {"seam_facets", s.seam_facets},
-                 {"crowded_split_faces", s.crowded_split_faces},
-                 {"crowded_blocks", s.crowded_blocks},
-                 {"cells", s.cells},
-                 {"facets", s.facets},
-                 {"edges", s.edges},
-                 {"vertices", s.vertices},
-                 {"pair_terms", s.pair_terms},
-                 {"structural_groups", s.structural_groups},
-                 {"parity_groups", s.parity_groups},
-                 {"fixed_cells", s.fixed_cells},
-                 {"full_cells", s.full_cells},
-                 {"lp_variables", s.lp_variables},
-                 {"lp_constraints", s.lp_constraints},
-                 {"lp_nonzeros", s.lp_nonzeros}};
-  j["engine"] = s.engine;
-  j["block_size"] = s.block_size;
-  j["block_size_rule"] = {{"automatic", s.block_size_automatic},
-                          {"mean_segments_per_block", s.mean_segments_per_block},
-                          {"mean_planes_per_block", s.mean_planes_per_block},
-                          {"at_floor", s.block_size_at_floor}};
-  j["detection_block_size"] = s.detection_block_size;
-  j["scene_mode"] = s.scene_mode;
-  j["scene_mode_reason"] = s.scene_mode_reason;
-  j["sigma"] = s.sigma;
-  j["crease_weight"] = s.crease_weight;
-  j["epsilon"] = EpsilonJson(s.epsilon);
-  if (s.quality_measured) j["quality"] = SurfaceQualityJson(s.quality);
-  // A lower bound of -infinity (none known) and its gap are null.
-  const bool bounded = std::isfinite(s.lower_bound);
-  j["solver"] = {{"backend", s.solver_backend},
-                 {"method", s.labeling_method},
-                 {"status", s.solver_status},
-                 {"objective", s.objective},
-                 {"rounded_objective", s.rounded_objective},
-                 {"relaxed_objective", s.relaxed_objective},
-                 {"lower_bound", bounded ? nlohmann::json(s.lower_bound) : nlohmann::json()},
-                 {"lower_bound_source", s.lower_bound_source},
-                 {"gap", bounded ? nlohmann::json(s.objective - s.lower_bound) : nlohmann::json()},
-                 {"fractional_cells", s.fractional_cells}};
-  j["mesh"] = {{"vertices", s.mesh_vertices},
-               {"faces", s.mesh_faces},
-               {"closed", s.mesh_closed},
-               {"manifold", s.mesh_manifold},
-               {"volume", s.mesh_volume},
-               {"split_vertices", s.split_vertices},
-               {"removed_fragments", s.removed_fragments},
-               {"removed_fragment_volume", s.removed_fragment_volume},
-               {"removed_fragment_segments", s.removed_fragment_segments}};
-  if (Expected<MeshValidity> validity = CheckMesh(r.mesh)) {
-    j["validity"] = MeshValidityJson(*validity);
-  }
-  j["peak_memory_bytes"] = s.peak_memory_bytes;
-  j["warnings"] = r.warnings;
+  j["output_options"] = args.registry->Effective(kOutputOptionKeys);
+  j.update(nlohmann::ordered_json::parse(ReportJson(r, args.options)));
   return j;
 }
 
 int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
+  args.options.num_threads = common.threads;
   if (Status s = args.registry->ApplyConfig(); !s) return ReportError(s.error());
+  if (Status s = args.options.Validate(); !s) return ReportError(s.error());
   if (Status s = args.georeference.Validate(); !s) return ReportError(s.error());
   OutputFiles files("reconstruct");
   args.source.AddInputsTo(files);
@@ -128,7 +63,6 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
 
-  args.options.num_threads = common.threads;
   Expected<ReconstructResult> result =
       Reconstruct(read->scene.View(), args.options, CliRunControl(common));
   if (!result) return ReportError(result.error(), args.source.input);
@@ -145,7 +79,7 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   };
   if (Status s = files.Write(args.output, write_surface); !s) return ReportError(s.error());
   if (!args.report.empty()) {
-    const nlohmann::json report = ReportJson(args, *result);
+    const nlohmann::ordered_json report = CliReportJson(args, *result);
     if (Status s =
             files.Write(args.report,
                         [&](const auto& path) { return WriteReport(path, report, "reconstruct"); });
@@ -184,8 +118,6 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
 
 Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   auto args = std::make_shared<ReconstructArgs>();
-  ReconstructOptions& o = args->options;
-  EnergyWeights& w = o.weights;
   Command cmd;
   cmd.app = app.add_subcommand(
       "reconstruct", "Reconstruct a closed piecewise-planar mesh from 3D line segments");
@@ -194,83 +126,13 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
   sub->add_option("--report", args->report, "Write the run report (JSON) here");
   OptionRegistry& r = *(args->registry = std::make_unique<OptionRegistry>(*sub));
-  r.AddChoice("planes",
-              o.planes,
-              {{"detect", PlaneSource::kDetect}, {"given", PlaneSource::kGiven}},
-              "Planes: detect them, or use the input's");
-  r.AddChoice("scene",
-              o.scene_mode,
-              {{"exterior", SceneMode::kExterior},
-               {"interior", SceneMode::kInterior},
-               {"auto", SceneMode::kAuto}},
-              "Boundary: box cells empty (exterior), full (interior), or decided");
-  r.Add("w-textural", w.textural, "Textural weight");
-  r.Add("w-structural", w.structural, "Structural weight");
-  r.Add(
-      "w-crease", w.crease, "Crease weight (default: 0.2 in interior scenes, 0 in exterior ones)");
-  r.Add("w-visibility", w.visibility, "Visibility weight");
-  r.Add("w-edge", w.edge, "Edge regularisation weight");
-  r.Add("w-corner", w.corner, "Corner regularisation weight");
-  r.Add("w-area", w.area, "Area weight");
-  r.Add("w-open-seam",
-        w.open_seam,
-        "Block engine: weight of surface on block faces that carry no plane, per area / sigma^2");
-  r.Add("w-prior", w.viewpoint_prior, "Viewpoint prior weight");
-  r.Add("sigma", o.sigma, "Scale sigma, scene units (default: median length)");
-  r.Add("samples-per-sigma", o.samples_per_sigma, "Samples per sigma of segment");
-  r.AddFlag("structural-as-textural",
-            o.structural_as_textural,
-            "Ablation: structural segments count as two textural ones");
-  r.AddChoice("solver",
-              o.solver.backend,
-              {{"auto", SolverBackend::kAuto},
-               {"clp", SolverBackend::kClp},
-               {"maxflow", SolverBackend::kMaxflow},
-               {"pdhg", SolverBackend::kPdhg},
-               {"band", SolverBackend::kBand},
-               {"cbc", SolverBackend::kCbc},
-               {"clp-barrier", SolverBackend::kClpBarrier},
-               {"blocks", SolverBackend::kBlocks},
-               {"pdhg-energy", SolverBackend::kPdhgEnergy}},
-              "Labelling backend (auto: by model size)");
-  r.Add("time-limit", o.solver.time_limit_seconds, "Solver time limit, s (0 = none)");
-  r.AddChoice("engine",
-              o.engine,
-              {{"monolithic", ComplexEngine::kMonolithic}, {"blocks", ComplexEngine::kBlocks}},
-              "Cell complex: one arrangement of the scene box, or per-block arrangements "
-              "(blocks of --block-size, automatic when 0)");
-  r.Add("block-size",
-        o.block_size,
-        "Block engine: side of the base blocks, scene units (0 = automatic; --engine blocks "
-        "only)")
-      ->check(AtLeast(0.0));
-  r.Add("block-margin",
-        o.block_margin,
-        "Blocks a plane's support region is dilated by, fractions allowed (--engine blocks)")
-      ->check(Between(0.0, 64.0));
-  r.Add("box-margin", o.box_margin, "Box margin, fraction of the extent per side");
-  r.Add("seed", o.seed, "Random seed");
+  r.AddOptions(args->options, {"num_threads"});  // num_threads: the global -j
   r.AddFlag("ascii", args->ascii, "ASCII PLY");
   r.AddFlag("cityjson", args->cityjson,
             "Write CityJSON whatever the output extension (one Building per connected part; "
             ".city.jsonl names write CityJSONSeq)");
   r.Add("crs", args->georeference.crs,
         "CityJSON and IFC: the coordinates' reference system, EPSG:CODE");
-  r.AddFlag("triangulate", o.triangulate, "Triangles instead of convex polygons");
-  r.AddFlag(
-      "merge-coplanar",
-      o.merge_coplanar,
-      "Blocks engine: neighbouring faces of one plane (split by block faces or by planes "
-      "without surface there) become one polygon (may be non-convex; not with --triangulate)");
-  r.AddFlag("quality",
-            o.measure_quality,
-            "Figures without ground truth in the report (data fit, visibility, components; "
-            "--quality=false skips them)");
-  r.AddFlag("remove-fragments",
-            o.remove_floating_fragments,
-            "Drop floating fragments: components holding fewer supported lines than 3 "
-            "(--remove-fragments=false keeps them)");
-  RegisterDetectionOptions(r, o.detection, "detect-");
   cmd.run = [&common, args] { return RunReconstruct(common, *args); };
   return cmd;
 }

@@ -14,5 +14,6 @@ Command AddRenderCommand(CLI::App& app, CommonOptions& common);
 Command AddArrangeCommand(CLI::App& app, CommonOptions& common);
 Command AddDetectCommand(CLI::App& app, CommonOptions& common);
 Command AddReconstructCommand(CLI::App& app, CommonOptions& common);
+Command AddOptionsCommand(CLI::App& app, CommonOptions& common);
 
 }  // namespace linesurf::cli

@@ -1,15 +1,18 @@
 #pragma once
-// One declaration per option gives its command-line flag, its entry in a `--config FILE` JSON
-// object and its field in the run report (COLMAP's OptionManager pattern): the option's default
-// is the one of the options struct it writes into, and exists nowhere else.
+// The command line and `--config FILE` of a command: the library's options come from their one
+// declaration (linesurf/option_schema.h), flag, key and range; the command's own (output format,
+// CRS) are added one by one. Defaults are the options structs' own and exist nowhere else.
 
 #include "linesurf/error.h"
+#include "linesurf/option_schema.h"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -23,6 +26,30 @@ class OptionRegistry {
  public:
   /// Options are added to `app`; `--config FILE` is added at once.
   explicit OptionRegistry(CLI::App& app);
+
+  /// Every option of the library's `options` (VisitOptions) but those whose path is in `skip`:
+  /// flag `--<spec.flag>`, key spec.path; ApplyConfig checks each value against its spec.
+  template <typename Options>
+  void AddOptions(Options& options, const std::vector<std::string_view>& skip = {}) {
+    VisitOptions(options, [&](const OptionSpec& spec, auto& field) {
+      if (std::find(skip.begin(), skip.end(), spec.path) != skip.end()) return;
+      using T = std::remove_reference_t<decltype(field)>;
+      const std::string flag(spec.flag);
+      std::string help(spec.help);
+      if constexpr (std::is_same_v<T, bool>) {
+        AddFlag(flag, field, help);
+      } else if constexpr (std::is_enum_v<T>) {
+        AddChoice(flag, field, EnumChoices<T>(), help);
+      } else {
+        if (const std::string range = OptionRangeText(spec.range); !range.empty()) {
+          help += " " + range;
+        }
+        Add(flag, field, help);
+      }
+      entries_.back().key = std::string(spec.path);
+      entries_.back().violation = [spec, &field] { return OptionValueViolation(spec, field); };
+    });
+  }
 
   /// A value option `--<name>` (JSON key: the name with '_' for '-'), writing into `field`.
   template <typename T>
@@ -77,11 +104,14 @@ class OptionRegistry {
   }
 
   /// After parsing: sets every option the command line did not give from the `--config` file
-  /// (if any). kInvalidOptions naming the file and key for an unknown key or a wrong type.
+  /// (if any; keys as nested objects {"weights": {"edge": 0.2}} or dotted "weights.edge"), then
+  /// checks the library's options against their specs. kInvalidOptions naming the file and key
+  /// for an unknown key or a wrong type, naming the flag and path for a value out of range.
   [[nodiscard]] Status ApplyConfig();
-  /// The effective value of every option, keyed as in the config file, in declaration order
-  /// (ordered_json so a report lists them as the help does).
-  [[nodiscard]] nlohmann::ordered_json Effective() const;
+  /// The effective value of every option in declaration order (ordered_json so a report lists
+  /// them as the help does), nested by the dots of the keys.
+  /// `only`: these keys alone (all when empty).
+  [[nodiscard]] nlohmann::ordered_json Effective(const std::vector<std::string>& only = {}) const;
 
  private:
   struct Entry {
@@ -89,7 +119,17 @@ class OptionRegistry {
     CLI::Option* option = nullptr;
     std::function<void(const nlohmann::json&)> set;  ///< throws on a wrong JSON type or value
     std::function<nlohmann::json()> get;
+    std::function<std::string()> violation;  ///< why the value is refused; library options only
   };
+
+  template <typename E>
+  static std::vector<std::pair<std::string, E>> EnumChoices() {
+    std::vector<std::pair<std::string, E>> names;
+    for (int i = 0; i < OptionEnum<E>::kCount; ++i) {
+      names.emplace_back(OptionEnum<E>::Name(static_cast<E>(i)), static_cast<E>(i));
+    }
+    return names;
+  }
 
   template <typename T>
   static T Convert(const nlohmann::json& j) {
@@ -116,6 +156,8 @@ class OptionRegistry {
     }
     return "?";
   }
+  /// kInvalidOptions naming the flag and path of the first library option out of its range.
+  [[nodiscard]] Status CheckValues() const;
   void Register(const std::string& name,
                 CLI::Option* option,
                 std::function<void(const nlohmann::json&)> set,

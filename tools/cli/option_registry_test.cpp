@@ -117,5 +117,39 @@ TEST(OptionRegistry, BadConfigsNameTheFileAndKey) {
   EXPECT_NE(s.error().message.find("no such file"), std::string::npos);
 }
 
+// The library's options come from their one declaration: flag, path key (nested or dotted in a
+// config), and a range check naming both.
+TEST(OptionRegistry, SchemaOptionsTakeTheirFlagsKeysAndRanges) {
+  CLI::App app{"test"};
+  ReconstructOptions options;
+  OptionRegistry registry{app};
+  registry.AddOptions(options, {"num_threads"});
+  EXPECT_EQ(app.get_option_no_throw("--threads"), nullptr);
+  ASSERT_NE(app.get_option_no_throw("--w-visibility"), nullptr);
+  const std::string config =
+      WriteConfig(R"({"weights": {"edge": 0.25}, "detection.support_gap": 4, "engine": "blocks"})");
+  std::vector<std::string> args = {"0.5", "--w-visibility", config, "--config"};
+  app.parse(args);
+  ASSERT_TRUE(registry.ApplyConfig());
+  EXPECT_EQ(options.weights.visibility, 0.5);
+  EXPECT_EQ(options.weights.edge, 0.25);
+  EXPECT_EQ(options.detection.support_gap, 4.0);
+  const nlohmann::ordered_json effective = registry.Effective();
+  EXPECT_EQ(effective["weights"]["edge"], 0.25);
+  EXPECT_EQ(effective["plane_source"], "detect");
+  EXPECT_FALSE(effective.contains("num_threads"));
+
+  CLI::App app2{"test"};
+  ReconstructOptions options2;
+  OptionRegistry registry2{app2};
+  registry2.AddOptions(options2);
+  std::vector<std::string> bad = {"1001", "--support-gap"};
+  app2.parse(bad);
+  const Status s = registry2.ApplyConfig();
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().code, ErrorCode::kInvalidOptions);
+  EXPECT_EQ(s.error().message, "--support-gap (detection.support_gap) must be in [0, 1000]");
+}
+
 }  // namespace
 }  // namespace linesurf::cli

@@ -41,147 +41,17 @@ py::dict MeshToDict(const Mesh& mesh) {
   return d;
 }
 
-#define LINESURF_REPORT(field) report[#field] = stats.field
-
-py::dict ReportOf(const EpsilonEstimate& stats) {
-  py::dict report;
-  LINESURF_REPORT(epsilon);
-  LINESURF_REPORT(source);
-  LINESURF_REPORT(noise_scale);
-  LINESURF_REPORT(initial_epsilon);
-  LINESURF_REPORT(rounds);
-  LINESURF_REPORT(residuals);
-  return report;
+/// A report of report.h as Python objects (dicts, lists, numbers, strings).
+py::object ParsedReport(const std::string& json) {
+  return py::module_::import("json").attr("loads")(json);
 }
 
-py::dict ReportOf(const ComponentQuality& stats) {
-  py::dict report;
-  LINESURF_REPORT(faces);
-  LINESURF_REPORT(volume);
-  LINESURF_REPORT(supported_length);
-  LINESURF_REPORT(supported_segments);
-  LINESURF_REPORT(supported_lines);
-  LINESURF_REPORT(floating);
-  return report;
-}
-
-py::dict ReportOf(const SurfaceQuality& stats) {
-  py::dict report;
-  LINESURF_REPORT(epsilon);
-  LINESURF_REPORT(fit_distance);
-  LINESURF_REPORT(supported_segments);
-  LINESURF_REPORT(supported_length);
-  LINESURF_REPORT(data_fit);
-  LINESURF_REPORT(visibility_consistency);
-  LINESURF_REPORT(visibility_consistency_all);
-  py::list components;
-  for (const ComponentQuality& c : stats.components) components.append(ReportOf(c));
-  report["components"] = components;
-  LINESURF_REPORT(enclosed_volume);
-  LINESURF_REPORT(largest_component_share);
-  LINESURF_REPORT(floating_fragments);
-  LINESURF_REPORT(planes_off_surface);
-  return report;
-}
-
-py::dict ReportOf(const ReconstructStats& stats) {
-  py::dict report;
-  py::list stages;
-  for (const auto& [stage, seconds] : stats.stage_seconds)
-    stages.append(py::make_tuple(stage, seconds));
-  report["stage_seconds"] = stages;
-  LINESURF_REPORT(total_seconds);
-  LINESURF_REPORT(input_segments);
-  LINESURF_REPORT(segments);
-  LINESURF_REPORT(viewpoints);
-  LINESURF_REPORT(observations);
-  LINESURF_REPORT(planes);
-  LINESURF_REPORT(capped_blocks);
-  report["epsilon"] = ReportOf(stats.epsilon);
-  report["segments_with_planes"] = py::make_tuple(
-      stats.segments_with_planes[0], stats.segments_with_planes[1], stats.segments_with_planes[2]);
-  LINESURF_REPORT(planes_in_complex);
-  LINESURF_REPORT(engine);
-  LINESURF_REPORT(block_size);
-  LINESURF_REPORT(block_size_automatic);
-  LINESURF_REPORT(mean_segments_per_block);
-  LINESURF_REPORT(mean_planes_per_block);
-  LINESURF_REPORT(block_size_at_floor);
-  LINESURF_REPORT(detection_block_size);
-  LINESURF_REPORT(blocks);
-  LINESURF_REPORT(seam_facets);
-  LINESURF_REPORT(crowded_split_faces);
-  LINESURF_REPORT(crowded_blocks);
-  LINESURF_REPORT(cells);
-  LINESURF_REPORT(facets);
-  LINESURF_REPORT(edges);
-  LINESURF_REPORT(vertices);
-  LINESURF_REPORT(scene_mode);
-  LINESURF_REPORT(scene_mode_reason);
-  LINESURF_REPORT(sigma);
-  LINESURF_REPORT(crease_weight);
-  LINESURF_REPORT(pair_terms);
-  LINESURF_REPORT(structural_groups);
-  LINESURF_REPORT(parity_groups);
-  LINESURF_REPORT(fixed_cells);
-  LINESURF_REPORT(lp_variables);
-  LINESURF_REPORT(lp_constraints);
-  LINESURF_REPORT(lp_nonzeros);
-  LINESURF_REPORT(solver_backend);
-  LINESURF_REPORT(solver_status);
-  LINESURF_REPORT(objective);
-  LINESURF_REPORT(relaxed_objective);
-  LINESURF_REPORT(rounded_objective);
-  LINESURF_REPORT(lower_bound);
-  LINESURF_REPORT(lower_bound_source);
-  LINESURF_REPORT(labeling_method);
-  LINESURF_REPORT(fractional_cells);
-  LINESURF_REPORT(full_cells);
-  LINESURF_REPORT(mesh_vertices);
-  LINESURF_REPORT(mesh_faces);
-  LINESURF_REPORT(mesh_closed);
-  LINESURF_REPORT(mesh_manifold);
-  LINESURF_REPORT(mesh_volume);
-  LINESURF_REPORT(split_vertices);
-  LINESURF_REPORT(removed_fragments);
-  LINESURF_REPORT(removed_fragment_volume);
-  LINESURF_REPORT(removed_fragment_segments);
-  if (stats.quality_measured) report["quality"] = ReportOf(stats.quality);
-  LINESURF_REPORT(peak_memory_bytes);
-  return report;
-}
-
-py::dict ReportOf(const DetectStats& stats) {
-  py::dict report;
-  LINESURF_REPORT(input_segments);
-  LINESURF_REPORT(segments);
-  LINESURF_REPORT(lines);
-  LINESURF_REPORT(epsilon);
-  report["epsilon_estimate"] = ReportOf(stats.epsilon_estimate);
-  LINESURF_REPORT(blocks);
-  LINESURF_REPORT(planes_before_fusion);
-  LINESURF_REPORT(planes);
-  LINESURF_REPORT(merges);
-  LINESURF_REPORT(memberships_dropped);
-  LINESURF_REPORT(capped_blocks);
-  LINESURF_REPORT(segments_with_0_planes);
-  LINESURF_REPORT(segments_with_1_plane);
-  LINESURF_REPORT(segments_with_2_planes);
-  LINESURF_REPORT(candidates_evaluated);
-  LINESURF_REPORT(failed_draws);
-  LINESURF_REPORT(seconds);
-  LINESURF_REPORT(seconds_fusion);
-  return report;
-}
-
-#undef LINESURF_REPORT
-
-py::dict ResultToDict(const ReconstructResult& result) {
+py::dict ResultToDict(const ReconstructResult& result, const ReconstructOptions& options) {
   py::dict d;
   d["mesh"] = MeshToDict(result.mesh);
   d["planes"] = PlanesToArray(result.planes);
   d["memberships"] = MembershipsToArray(result.memberships);
-  d["report"] = ReportOf(result.stats);
+  d["report"] = ParsedReport(ReportJson(result, options));
   d["warnings"] = result.warnings;
   return d;
 }
@@ -193,7 +63,8 @@ py::dict ReconstructArrays(const py::tuple& arrays,
   const SceneData scene = ReadArrays(arrays);
   PythonRunControl control(std::move(progress), std::move(log));
   return ResultToDict(ValueOrRaise(control.Run<ReconstructResult>(
-      [&](const RunControl& c) { return Reconstruct(scene.View(), options, c); })));
+                          [&](const RunControl& c) { return Reconstruct(scene.View(), options, c); })),
+                      options);
 }
 
 std::unique_ptr<Reconstruction> PrepareArrays(const py::tuple& arrays,
@@ -211,8 +82,11 @@ py::dict SolvePrepared(const Reconstruction& prepared,
                        py::object progress,
                        py::object log) {
   PythonRunControl control(std::move(progress), std::move(log));
+  ReconstructOptions options = prepared.Options();
+  options.weights = weights;
   return ResultToDict(ValueOrRaise(control.Run<ReconstructResult>(
-      [&](const RunControl& c) { return prepared.Solve(weights, c); })));
+                          [&](const RunControl& c) { return prepared.Solve(weights, c); })),
+                      options);
 }
 
 py::dict DetectArrays(const py::tuple& arrays,
@@ -235,7 +109,7 @@ py::dict DetectArrays(const py::tuple& arrays,
   d["inlier_length"] =
       py::array_t<double>(static_cast<py::ssize_t>(inlier_length.size()), inlier_length.data());
   d["memberships"] = MembershipsToArray(result.memberships);
-  d["report"] = ReportOf(result.stats);
+  d["report"] = ParsedReport(ReportJson(result, options));
   d["warnings"] = result.warnings;
   return d;
 }

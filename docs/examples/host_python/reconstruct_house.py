@@ -34,8 +34,9 @@ def main(argv):
         print(f"\nreconstruct_house: {error} ({error.code})", file=sys.stderr)
         return 4
     r = result.report
-    closed = "closed 2-manifold" if r["mesh_closed"] and r["mesh_manifold"] else "NOT closed"
-    print(f"linesurf {linesurf.__version__}: {r['planes']} planes, {r['cells']} cells, mesh "
+    closed = "closed 2-manifold" if r["mesh"]["closed"] and r["mesh"]["manifold"] else "NOT closed"
+    print(f"linesurf {linesurf.__version__}: {r['counts']['planes']} planes, "
+          f"{r['counts']['cells']} cells, mesh "
           f"{len(result.mesh.vertices)} vertices / {result.mesh.num_faces} faces ({closed}), "
           f"{r['total_seconds']:.2f} s")
     return 0

@@ -23,7 +23,9 @@
 
 #include "linesurf/error.h"
 #include "linesurf/export.h"
+#include "linesurf/option_schema.h"
 #include "linesurf/options.h"
+#include "linesurf/report.h"
 #include "linesurf/result.h"
 #include "linesurf/run_control.h"
 #include "linesurf/types.h"

@@ -96,15 +96,15 @@ LINESURF_API void linesurf_scene_free(linesurf_scene* scene);
 /* Reconstruction options with the defaults of linesurf::ReconstructOptions. */
 LINESURF_API linesurf_options* linesurf_options_create(void);
 LINESURF_API void linesurf_options_free(linesurf_options* options);
-/* Sets a numeric option by its C++ field path, e.g. "weights.visibility", "detection.epsilon",
- * "sigma", "seed", "num_threads", "triangulate", "merge_coplanar" (0/1). Unknown names and values
- * that do not fit the field give LINESURF_ERROR_INVALID_OPTIONS; ranges are checked by
- * linesurf_reconstruct. */
+/* Sets a numeric option by its path in linesurf/option_schema.h (the C++ field path), e.g.
+ * "weights.visibility", "detection.epsilon", "sigma", "seed", "num_threads", "triangulate",
+ * "merge_coplanar" (0/1). Unknown names, enumerated options and values that do not fit the field
+ * give LINESURF_ERROR_INVALID_OPTIONS; ranges are checked by linesurf_reconstruct. */
 LINESURF_API linesurf_status linesurf_options_set_number(linesurf_options* options,
                                                          const char* name,
                                                          double value,
                                                          linesurf_error** error);
-/* Sets an enumerated option by name: "planes" (detect, given), "scene_mode" (exterior,
+/* Sets an enumerated option by name: "plane_source" (detect, given), "scene_mode" (exterior,
  * interior, auto), "solver.backend" (auto, clp, maxflow, pdhg, band, cbc, clp-barrier, blocks,
  * pdhg-energy), "engine" (monolithic, blocks). */
 LINESURF_API linesurf_status linesurf_options_set_string(linesurf_options* options,
@@ -129,6 +129,11 @@ LINESURF_API size_t linesurf_result_num_planes(const linesurf_result* result);
 LINESURF_API const double* linesurf_result_planes(const linesurf_result* result);
 LINESURF_API size_t linesurf_result_num_warnings(const linesurf_result* result);
 LINESURF_API const char* linesurf_result_warning(const linesurf_result* result, size_t index);
+/* The run report as JSON text (linesurf/report.h: the layout of `linesurf reconstruct --report`
+ * without its paths), valid until the result is freed; NULL with *error set when it cannot be
+ * made (out of memory). */
+LINESURF_API const char* linesurf_result_report_json(const linesurf_result* result,
+                                                    linesurf_error** error);
 /* Writes the mesh as PLY (binary, or ASCII when `ascii` is non-zero), OBJ or OFF by extension:
  * the same bytes as `linesurf reconstruct -o`. */
 LINESURF_API linesurf_status linesurf_result_write_mesh(const linesurf_result* result,

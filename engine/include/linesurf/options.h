@@ -44,15 +44,24 @@ struct DetectionParameters {
   std::int32_t max_planes = 160;
   /// Minimum inlier segments of a plane (>= 2; the reference uses 3).
   std::int32_t min_support = 3;
-  /// One plane, one piece: a plane whose inliers fall into pieces more than this many median
-  /// line lengths apart that disagree about it keeps its largest piece ([0, 1000]; 0 = off, the
+  /// One plane, one piece: when a plane's inliers fall into pieces more than this many median
+  /// line lengths apart and a piece fitted on its own disagrees with the plane (by more than
+  /// eps / 2 at one of its endpoints), the plane keeps only its largest piece (refitted) and the
+  /// others stay free. Stops a plane tilted across two parallel roofs or walls of different
+  /// buildings a few eps apart, which has more inliers than either ([0, 1000]; 0 = off, the
   /// paper's method; docs/plane_detection.md).
   double support_gap = 8.0;
-  /// Segments on one infinite line within this x eps are detected as one line ([0, 0.5]; 0 =
-  /// off).
+  /// Segments on one infinite line (every endpoint within this x eps of the other's line), such
+  /// as the per-camera parts of one 3D line in the reference's residual inputs, are detected as
+  /// one line and all get its planes: one physical line counts once, as in the reference RANSAC,
+  /// which ran before the split ([0, 0.5]; 0 = every segment on its own).
   double collinear_tolerance = 1e-3;
   /// Per-block detection: cube side (>= 0; 0 = the whole scene is one block, the monolithic
-  /// method). Use about one building's size on city-scale scenes.
+  /// method). RANSAC runs per cube on the segments whose midpoint lies in the cube dilated by the
+  /// halo, cubes in parallel, then a global fusion merges the pieces of one plane found in
+  /// neighbouring cubes and applies the at-most-2 rule again; max_planes then bounds each
+  /// block. A scene that fits in one cube gives exactly the monolithic result. Use about one
+  /// building's size on city-scale scenes.
   double block_size = 0.0;
   /// Halo of a block, fraction of its side ([0, 0.5)).
   double block_halo = 0.1;
@@ -158,7 +167,7 @@ struct QualityOptions {
 
 /// Options of Reconstruct and Reconstruction::Prepare.
 struct ReconstructOptions {
-  PlaneSource planes = PlaneSource::kDetect;
+  PlaneSource plane_source = PlaneSource::kDetect;
   /// Plane detection (ignored with PlaneSource::kGiven); its seed is `seed`.
   DetectionParameters detection;
   SceneMode scene_mode = SceneMode::kAuto;
@@ -302,36 +311,54 @@ struct GeoreferenceOptions {
   return "";
 }
 
-namespace internal {
-
-/// The enumerator of E among the first `count` whose name is `name`.
+/// The names of an enumerated option's values, in enumerator order.
 template <typename E>
-std::optional<E> EnumFromName(std::string_view name,
-                              int count,
-                              const char* (*name_of)(E) noexcept) noexcept {
-  for (int i = 0; i < count; ++i) {
-    if (name == name_of(static_cast<E>(i))) return static_cast<E>(i);
+struct OptionEnum;
+template <>
+struct OptionEnum<PlaneSource> {
+  static constexpr int kCount = 2;
+  static const char* Name(PlaneSource v) noexcept { return PlaneSourceName(v); }
+};
+template <>
+struct OptionEnum<SceneMode> {
+  static constexpr int kCount = 3;
+  static const char* Name(SceneMode v) noexcept { return SceneModeName(v); }
+};
+template <>
+struct OptionEnum<SolverBackend> {
+  static constexpr int kCount = 9;
+  static const char* Name(SolverBackend v) noexcept { return SolverBackendName(v); }
+};
+template <>
+struct OptionEnum<ComplexEngine> {
+  static constexpr int kCount = 2;
+  static const char* Name(ComplexEngine v) noexcept { return ComplexEngineName(v); }
+};
+
+/// The enumerator of E named `name`, or std::nullopt.
+template <typename E>
+[[nodiscard]] std::optional<E> OptionEnumFromName(std::string_view name) noexcept {
+  for (int i = 0; i < OptionEnum<E>::kCount; ++i) {
+    if (name == OptionEnum<E>::Name(static_cast<E>(i))) return static_cast<E>(i);
   }
   return std::nullopt;
 }
 
-}  // namespace internal
-
 /// The enumerator a name above denotes; std::nullopt for any other string.
 [[nodiscard]] inline std::optional<PlaneSource> PlaneSourceFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<PlaneSource>(name, 2, &PlaneSourceName);
+  return OptionEnumFromName<PlaneSource>(name);
 }
 [[nodiscard]] inline std::optional<SceneMode> SceneModeFromName(std::string_view name) noexcept {
-  return internal::EnumFromName<SceneMode>(name, 3, &SceneModeName);
+  return OptionEnumFromName<SceneMode>(name);
 }
 [[nodiscard]] inline std::optional<SolverBackend> SolverBackendFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<SolverBackend>(name, 9, &SolverBackendName);
+  return OptionEnumFromName<SolverBackend>(name);
 }
 [[nodiscard]] inline std::optional<ComplexEngine> ComplexEngineFromName(
     std::string_view name) noexcept {
-  return internal::EnumFromName<ComplexEngine>(name, 2, &ComplexEngineName);
+  return OptionEnumFromName<ComplexEngine>(name);
 }
 
 }  // namespace v1

@@ -1,0 +1,221 @@
+// The run reports of report.h: one JSON layout for the CLI, Python and C.
+
+#include "linesurf/linesurf.h"
+
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+#include <nlohmann/json.hpp>
+
+namespace linesurf {
+inline namespace v1 {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// Components beyond this many are counted, not listed.
+constexpr std::size_t kMaxListedComponents = 200;
+
+/// Every option by its path, nested at the dots ({"weights": {"edge": 0.1}}), enums by name,
+/// unset optionals as null.
+template <typename Options>
+Json OptionsJson(const Options& options) {
+  Json j = Json::object();
+  VisitOptions(options, [&j](const OptionSpec& spec, const auto& field) {
+    Json* node = &j;
+    std::string_view rest = spec.path;
+    for (std::size_t dot; (dot = rest.find('.')) != std::string_view::npos;
+         rest.remove_prefix(dot + 1)) {
+      node = &(*node)[std::string(rest.substr(0, dot))];
+    }
+    using T = std::remove_cvref_t<decltype(field)>;
+    Json& value = (*node)[std::string(rest)];
+    if constexpr (std::is_enum_v<T>) {
+      value = OptionEnum<T>::Name(field);
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      value = field ? Json(*field) : Json();
+    } else {
+      value = field;
+    }
+  });
+  return j;
+}
+
+Json EpsilonJson(const EpsilonEstimate& e) {
+  return {{"epsilon", e.epsilon},
+          {"source", e.source},
+          {"noise_scale", e.noise_scale},
+          {"initial_epsilon", e.initial_epsilon},
+          {"rounds", e.rounds},
+          {"residuals", e.residuals}};
+}
+
+Json QualityJson(const SurfaceQuality& q) {
+  Json components = Json::array();
+  for (std::size_t i = 0; i < q.components.size() && i < kMaxListedComponents; ++i) {
+    const ComponentQuality& c = q.components[i];
+    components.push_back({{"faces", c.faces},
+                          {"volume", c.volume},
+                          {"supported_length", c.supported_length},
+                          {"supported_segments", c.supported_segments},
+                          {"supported_lines", c.supported_lines},
+                          {"floating", c.floating}});
+  }
+  return {{"epsilon", q.epsilon},
+          {"fit_distance", q.fit_distance},
+          {"supported_segments", q.supported_segments},
+          {"supported_length", q.supported_length},
+          {"data_fit", q.data_fit},
+          {"visibility_consistency", q.visibility_consistency},
+          {"visibility_consistency_all_segments", q.visibility_consistency_all},
+          {"num_components", q.components.size()},
+          {"enclosed_volume", q.enclosed_volume},
+          {"largest_component_share", q.largest_component_share},
+          {"floating_fragments", q.floating_fragments},
+          {"components", std::move(components)},
+          {"planes_off_surface", q.planes_off_surface}};
+}
+
+Json ValidityJson(const MeshValidity& v) {
+  return {{"valid", v.IsValid()},
+          {"closed", v.closed},
+          {"two_manifold", v.two_manifold},
+          {"oriented", v.oriented},
+          {"outward", v.outward},
+          {"self_intersecting", v.self_intersecting},
+          {"num_components", v.num_components},
+          {"num_faces", v.num_faces},
+          {"num_vertices", v.num_vertices},
+          {"num_coincident_vertices", v.num_coincident_vertices},
+          {"num_boundary_edges", v.num_boundary_edges},
+          {"num_non_manifold_edges", v.num_non_manifold_edges},
+          {"num_non_manifold_vertices", v.num_non_manifold_vertices},
+          {"num_degenerate_faces", v.num_degenerate_faces},
+          {"num_zero_area_faces", v.num_zero_area_faces},
+          {"num_non_planar_faces", v.num_non_planar_faces},
+          {"num_intersecting_triangle_pairs", v.num_intersecting_triangle_pairs},
+          {"num_touching_triangle_pairs", v.num_touching_triangle_pairs},
+          {"signed_volume", v.signed_volume}};
+}
+
+/// Text that is not UTF-8 (a path in a warning) is written with replacement characters.
+std::string Dump(const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace); }
+
+}  // namespace
+
+std::string ReportJson(const ReconstructResult& result, const ReconstructOptions& options) {
+  const ReconstructStats& s = result.stats;
+  Json j;
+  j["options"] = OptionsJson(options);
+  Json stages = Json::object();
+  for (const auto& [name, seconds] : s.stage_seconds) stages[name] = seconds;
+  j["stage_seconds"] = std::move(stages);
+  j["total_seconds"] = s.total_seconds;
+  j["counts"] = {{"input_segments", s.input_segments},
+                 {"segments", s.segments},
+                 {"viewpoints", s.viewpoints},
+                 {"observations", s.observations},
+                 {"planes", s.planes},
+                 {"capped_blocks", s.capped_blocks},
+                 {"segments_with_0_planes", s.segments_with_planes[0]},
+                 {"segments_with_1_plane", s.segments_with_planes[1]},
+                 {"segments_with_2_planes", s.segments_with_planes[2]},
+                 {"planes_in_complex", s.planes_in_complex},
+                 {"blocks", s.blocks},
+                 {"seam_facets", s.seam_facets},
+                 {"crowded_split_faces", s.crowded_split_faces},
+                 {"crowded_blocks", s.crowded_blocks},
+                 {"cells", s.cells},
+                 {"facets", s.facets},
+                 {"edges", s.edges},
+                 {"vertices", s.vertices},
+                 {"pair_terms", s.pair_terms},
+                 {"structural_groups", s.structural_groups},
+                 {"parity_groups", s.parity_groups},
+                 {"fixed_cells", s.fixed_cells},
+                 {"full_cells", s.full_cells},
+                 {"lp_variables", s.lp_variables},
+                 {"lp_constraints", s.lp_constraints},
+                 {"lp_nonzeros", s.lp_nonzeros}};
+  j["engine"] = s.engine;
+  j["block_size"] = s.block_size;
+  j["block_size_rule"] = {{"automatic", s.block_size_automatic},
+                          {"mean_segments_per_block", s.mean_segments_per_block},
+                          {"mean_planes_per_block", s.mean_planes_per_block},
+                          {"at_floor", s.block_size_at_floor}};
+  j["detection_block_size"] = s.detection_block_size;
+  j["scene_mode"] = s.scene_mode;
+  j["scene_mode_reason"] = s.scene_mode_reason;
+  j["sigma"] = s.sigma;
+  j["crease_weight"] = s.crease_weight;
+  j["epsilon"] = EpsilonJson(s.epsilon);
+  if (s.quality_measured) j["quality"] = QualityJson(s.quality);
+  // A lower bound of -infinity (none known) and its gap are null.
+  const bool bounded = std::isfinite(s.lower_bound);
+  j["solver"] = {{"backend", s.solver_backend},
+                 {"method", s.labeling_method},
+                 {"status", s.solver_status},
+                 {"objective", s.objective},
+                 {"rounded_objective", s.rounded_objective},
+                 {"relaxed_objective", s.relaxed_objective},
+                 {"lower_bound", bounded ? Json(s.lower_bound) : Json()},
+                 {"lower_bound_source", s.lower_bound_source},
+                 {"gap", bounded ? Json(s.objective - s.lower_bound) : Json()},
+                 {"fractional_cells", s.fractional_cells}};
+  j["mesh"] = {{"vertices", s.mesh_vertices},
+               {"faces", s.mesh_faces},
+               {"closed", s.mesh_closed},
+               {"manifold", s.mesh_manifold},
+               {"volume", s.mesh_volume},
+               {"split_vertices", s.split_vertices},
+               {"removed_fragments", s.removed_fragments},
+               {"removed_fragment_volume", s.removed_fragment_volume},
+               {"removed_fragment_segments", s.removed_fragment_segments}};
+  if (Expected<MeshValidity> validity = CheckMesh(result.mesh)) {
+    j["validity"] = ValidityJson(*validity);
+  }
+  j["peak_memory_bytes"] = s.peak_memory_bytes;
+  j["warnings"] = result.warnings;
+  return Dump(j);
+}
+
+std::string ReportJson(const DetectResult& result, const DetectOptions& options) {
+  const DetectStats& st = result.stats;
+  Json j;
+  j["options"] = OptionsJson(options);
+  j["stats"] = {{"input_segments", st.input_segments},
+                {"segments", st.segments},
+                {"lines", st.lines},
+                {"epsilon", st.epsilon},
+                {"epsilon_estimate", EpsilonJson(st.epsilon_estimate)},
+                {"blocks", st.blocks},
+                {"planes_before_fusion", st.planes_before_fusion},
+                {"planes", st.planes},
+                {"merges", st.merges},
+                {"memberships_dropped", st.memberships_dropped},
+                {"capped_blocks", st.capped_blocks},
+                {"segments_with_0_planes", st.segments_with_0_planes},
+                {"segments_with_1_plane", st.segments_with_1_plane},
+                {"segments_with_2_planes", st.segments_with_2_planes},
+                {"candidates_evaluated", st.candidates_evaluated},
+                {"failed_draws", st.failed_draws},
+                {"seconds", st.seconds},
+                {"seconds_fusion", st.seconds_fusion}};
+  Json planes = Json::array();
+  for (const PlaneSupportInfo& support : result.support) {
+    planes.push_back(
+        {{"inlier_count", support.inlier_count}, {"inlier_length", support.inlier_length}});
+  }
+  j["planes"] = std::move(planes);
+  j["warnings"] = result.warnings;
+  return Dump(j);
+}
+
+std::string ReportJson(const MeshValidity& validity) { return Dump(ValidityJson(validity)); }
+
+std::string ReportJson(const SurfaceQuality& quality) { return Dump(QualityJson(quality)); }
+
+}  // namespace v1
+}  // namespace linesurf

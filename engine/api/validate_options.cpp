@@ -1,0 +1,37 @@
+// Validate() of the facade's options: every value against its spec (option_schema.h), then the
+// rules that tie options together.
+
+#include "linesurf/option_schema.h"
+
+#include "engine/api/options_conversion.h"
+#include "engine/pipeline/reconstruct.h"
+
+namespace linesurf {
+inline namespace v1 {
+namespace {
+
+/// The engine's rule, reported as an option error of the facade.
+Status AsOptionError(Status s) {
+  if (s) return s;
+  return Error{ErrorCode::kInvalidOptions, "options", s.error().message};
+}
+
+}  // namespace
+
+Status DetectOptions::Validate() const noexcept { return ValidateOptionValues(*this); }
+
+Status ReconstructOptions::Validate() const noexcept {
+  if (Status s = ValidateOptionValues(*this); !s) return s;
+  const pipeline::Engine complex_engine = api::ToEngine(engine);
+  if (Status s = AsOptionError(pipeline::ValidateEngineBlockSize(
+          complex_engine,
+          block_size,
+          {.block_size = "block_size", .detection_block_size = "detection.block_size"}));
+      !s) {
+    return s;
+  }
+  return AsOptionError(pipeline::ValidateMergeCoplanar(complex_engine, merge_coplanar, triangulate));
+}
+
+}  // namespace v1
+}  // namespace linesurf
