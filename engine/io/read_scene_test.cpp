@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "engine/io/reference_json.h"
-#include "engine/io/scene_compare_for_test.h"
+#include "tests/support/scene_compare.h"
 #include "tests/support/test_paths.h"
 
 namespace linesurf::io {

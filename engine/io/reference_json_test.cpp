@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/io/scene_compare_for_test.h"
+#include "tests/support/scene_compare.h"
 #include "tests/support/test_paths.h"
 
 namespace linesurf::io {

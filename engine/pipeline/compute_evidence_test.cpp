@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "engine/pipeline/grid_complex_for_test.h"
+#include "tests/support/grid_complex.h"
 #include "tests/support/thread_count.h"
 
 namespace linesurf::pipeline {

@@ -1,7 +1,7 @@
 #include "engine/pipeline/extract_surface.h"
 
 #include "engine/core/rng.h"
-#include "engine/pipeline/grid_complex_for_test.h"
+#include "tests/support/grid_complex.h"
 #include "engine/pipeline/mesh_index_topology.h"
 
 #include <Eigen/Geometry>

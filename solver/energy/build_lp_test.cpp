@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 namespace linesurf::solver {
 namespace {

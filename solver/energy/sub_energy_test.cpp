@@ -1,7 +1,7 @@
 #include "solver/energy/sub_energy.h"
 
 #include "engine/core/rng.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 namespace linesurf::solver {
 namespace {

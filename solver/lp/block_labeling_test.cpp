@@ -3,7 +3,7 @@
 #include "engine/core/rng.h"
 #include "solver/lp/backends/cbc/cbc_backend.h"
 #include "solver/lp/lp_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 #include "tests/support/thread_count.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #include "solver/lp/cell_blocks.h"
 
 #include "engine/core/exception.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "solver/lp/dual_ascent.h"
 
 #include "solver/lp/lp_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <gtest/gtest.h>
 

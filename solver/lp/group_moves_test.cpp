@@ -1,7 +1,7 @@
 #include "solver/lp/group_moves.h"
 
 #include "solver/lp/round_labels.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 #include "tests/support/thread_count.h"
 
 #include <gtest/gtest.h>

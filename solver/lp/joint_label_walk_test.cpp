@@ -1,7 +1,7 @@
 #include "solver/lp/joint_label_walk.h"
 
 #include "solver/lp/round_labels.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "solver/lp/lp_backend.h"
 
 #include "solver/lp/backends/cbc/cbc_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 #include "tests/support/thread_count.h"
 
 #include <gtest/gtest.h>

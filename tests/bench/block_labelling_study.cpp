@@ -30,7 +30,7 @@
 #include "engine/pipeline/reconstruct.h"
 #include "engine/pipeline/scene_box.h"
 #include "solver/lp/lp_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 #include "tests/bench/crop_scene.h"
 
 #include <chrono>

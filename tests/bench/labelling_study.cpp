@@ -18,7 +18,7 @@
 #include "engine/pipeline/reconstruct.h"
 #include "tests/bench/crop_scene.h"
 #include "solver/lp/lp_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 #include "tools/gen/synthesize.h"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Labelling solve per backend on grid-shaped energies with the real term kinds
-// (solver/testing/random_energy.h: unary textural and viewpoint costs, pairwise visibility and
+// (tests/support/random_energy.h: unary textural and viewpoint costs, pairwise visibility and
 // area, structural triples, parity groups on every grid edge, boundary cells fixed empty).
 //
 //   linesurf_bench_solver --benchmark_filter='Solve/clp/20'     one backend, one size
@@ -17,7 +17,7 @@
 
 #include "solver/energy/build_lp.h"
 #include "solver/lp/lp_backend.h"
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 namespace linesurf::solver {
 namespace {

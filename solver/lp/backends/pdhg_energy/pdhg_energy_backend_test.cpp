@@ -1,6 +1,6 @@
 #include "solver/lp/backends/pdhg_energy/pdhg_energy_backend.h"
 
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "solver/testing/random_energy.h"
+#include "tests/support/random_energy.h"
 
 #include <algorithm>
 #include <cmath>
