@@ -39,13 +39,15 @@ function(linesurf_set_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
 endfunction()
 
-# linesurf_add_test(MODULE <name> SOURCES ... DEPS ... [LABELS ...])
-#   One GoogleTest executable per module; tests are named <module>/Suite.Case.
+# linesurf_add_test(MODULE <name> SOURCES ... DEPS ... [LABELS ...] [SLOW <gtest filter>])
+#   One GoogleTest executable per module; tests are named <module>/Suite.Case and labelled
+#   LABELS (default `unit`: seconds for the whole label, `ctest -L unit`). The tests SLOW matches
+#   (a gtest filter, `Suite.Case:Suite.*`) are labelled `slow` instead.
 #   LINESURF_SHARED_DIR points at ../shared (real data); tests skip when it is absent.
 #   LINESURF_SOURCE_DIR points at the repository (bundled examples: docs/examples/house). Test
 #   executables sit in bin/ beside linesurf, which is how CLI tests find it (BinDir()).
 function(linesurf_add_test)
-  cmake_parse_arguments(ARG "" "MODULE" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "MODULE;SLOW" "SOURCES;DEPS;LABELS" ${ARGN})
   if(NOT LINESURF_BUILD_TESTS)
     return()
   endif()
@@ -56,12 +58,22 @@ function(linesurf_add_test)
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()
-  gtest_discover_tests(${target}
+  set(filter "*")
+  if(ARG_SLOW)
+    set(filter "-${ARG_SLOW}")
+  endif()
+  set(common
     TEST_PREFIX "${ARG_MODULE}/"
-    PROPERTIES LABELS "${ARG_LABELS}"
-      ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared"
-      ENVIRONMENT_MODIFICATION "LINESURF_SOURCE_DIR=set:${PROJECT_SOURCE_DIR}"
     DISCOVERY_TIMEOUT 60)
+  set(environment
+    ENVIRONMENT "LINESURF_SHARED_DIR=${PROJECT_SOURCE_DIR}/../shared"
+    ENVIRONMENT_MODIFICATION "LINESURF_SOURCE_DIR=set:${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${target} ${common} TEST_FILTER "${filter}"
+    PROPERTIES LABELS "${ARG_LABELS}" ${environment})
+  if(ARG_SLOW)
+    gtest_discover_tests(${target} ${common} TEST_FILTER "${ARG_SLOW}"
+      PROPERTIES LABELS slow ${environment})
+  endif()
 endfunction()
 
 # linesurf_add_benchmark(MODULE <name> SOURCES ... DEPS ...)
