@@ -1,4 +1,4 @@
-// The integral labelling against the integer optimum (docs/results.md, "Integral labelling"),
+// The integral labelling against the integer optimum (docs/user/results.md, "Integral labelling"),
 // printed as Markdown tables. Every row solves one energy several ways: the LP bound (Clp), the
 // labels right after rounding, after local search, after the default improvement, and the
 // integer optimum by Cbc (branch and cut; "stopped" when it does not prove optimality within

@@ -158,7 +158,7 @@ TEST(Reconstruct, CityOfSeveralBuildingsIsClosedManifoldAndAccurate) {
 
 // The floor's inner walls carry no textural segment; their creases with the floor and ceiling
 // are explained by the floor alone under the paper's structural term. The crease term (on by
-// default in interior scenes) brings them back (docs/results.md, "Crease term").
+// default in interior scenes) brings them back (docs/user/results.md, "Crease term").
 TEST(Reconstruct, CreaseTermKeepsTheUntexturedInnerWallsOfAFloor) {
   const synth::SyntheticScene s = Make("floor");
   ASSERT_TRUE(s.interior);
