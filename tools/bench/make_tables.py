@@ -71,7 +71,7 @@ def render(name, table, doc):
         lines += ["```", m["command"].rstrip("\n"), "```", ""]
     lines += render_rows(table)
     when = m["date"] + (" " + m["time_utc"] + " UTC" if m.get("time_utc") else "")
-    commit = "at " + m["commit"] if m.get("commit") else "commit not recorded"
+    commit = "at " + m["commit"][:10] if m.get("commit") else "commit not recorded"
     lines += ["", "Measured %s, %s, on %s. Data: [%s](%s)." % (
         when, commit, m["machine"], "tools/bench/tables/" + name + ".json", link.as_posix())]
     return "\n".join(lines) + "\n"
