@@ -637,8 +637,7 @@ double ProcessCpuSeconds() {
 
 /// Cancel requested from the progress callback during the cell complex of Andalusian (148
 /// given planes, ~3e5 cells), early and late (a late plane insertion took over 1 s before the
-/// complex polled inside insertions): the call returns kCancelled within 1 s of the request
-/// (must-show 2 of issue 13). Asserted on the process's CPU time from the request to the
+/// complex polled inside insertions): the call returns kCancelled within 1 s of the request. Asserted on the process's CPU time from the request to the
 /// return, which a loaded machine does not inflate; the wall time is printed beside it.
 TEST(FacadeReconstruct, CancelFromProgressOnAndalusianReturnsWithinOneSecond) {
   LINESURF_REQUIRE_ANDALUSIAN(input);

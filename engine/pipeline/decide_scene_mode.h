@@ -14,7 +14,8 @@
 ///
 /// Why surround and not the inliers' bounding box: a plane whose inliers are spread over a
 /// whole city (the floor bands of every building at one height) has a bounding box that covers
-/// the streets, so every street viewpoint looked enclosed by it (issue 12: 763 of 1,100).
+/// the streets, so every street viewpoint would look enclosed by it (763 of the 1,100
+/// viewpoints of a synthetic city did).
 
 #include "engine/core/run_context.h"
 #include "engine/core/scene.h"

@@ -88,8 +88,8 @@ struct LabelingOptions {
   /// 1 % above the full LP's with 36 % fewer full cells (docs/user/results.md, "Integral labelling").
   std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   /// "auto" uses the per-block solve above this many LP columns, when a partition of the cells
-  /// into more than one block is given; >= 0. 20,000,000: since pdhg-energy's weighted steps
-  /// (session 14) the global solve is better and cheaper at every size measured, up to
+  /// into more than one block is given; >= 0. 20,000,000: with pdhg-energy's weighted steps
+  /// the global solve is better and cheaper at every size measured, up to
   /// city-1000's 7.0M columns (23 s to a 0.04 % gap, where the per-block solve took 221 s and
   /// ended 1.1 % higher); above that the per-block solve keeps each solve's size bounded
   /// (docs/design/lp_backend.md, "Per-block solve").

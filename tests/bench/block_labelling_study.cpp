@@ -1,5 +1,5 @@
 // The per-block labelling ("blocks", solver/lp/block_labeling.h) against the global solve
-// (docs/user/benchmarks.md, "Per-block labelling"). Prints Markdown rows.
+// (docs/user/benchmarks.md, "Studies of one stage"). Prints Markdown rows.
 //   linesurf_block_labelling_study grids SIZES EDGES [global=clp] [threads=2] [inner=auto]
 //       solver::testing::GridEnergy n^3 for each n of SIZES, cut into cubes of each edge of
 //       EDGES (comma lists); the global solve with the backend `global` (clp, pdhg, none).

@@ -11,8 +11,8 @@
 //   linesurf_labelling_study andalusian PATH XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX [cbc_seconds=600]
 //       the Andalusian segments with both ends in the box (world frame), the given planes that
 //       keep a member, reference weights (textural 1, structural 1, visibility 1, edge 0.1,
-//       corner 0.1, sigma 1): the full LP (pdhg) and the band strategy, each with round 1's
-//       labelling (rounding, local search) and with today's default, then Cbc.
+//       corner 0.1, sigma 1): the full LP (pdhg) and the band strategy, each with the
+//       labelling of rounding and local search alone and with the default, then Cbc.
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/reconstruct.h"

@@ -126,10 +126,10 @@ struct EnergyWeights {
   /// through its crease pays this, per length / sigma, shared by the segment's views (0 = the
   /// paper's energy). Unset: 0.2 in an interior scene, 0 in an exterior one, where lines that
   /// only happen to be coplanar (a row of sills on four walls) make false creases
-  /// (docs/design/reconstruction.md, measured in docs/user/results.md).
+  /// (docs/design/reconstruction.md; measured in docs/user/results.md, "Crease term").
   std::optional<double> crease;
   /// Visibility lambda_vis (>= 0; 1, the reference's Andalusian demo; paper: 0.1, which leaves
-  /// slabs and fragments on Andalusian: docs/user/results.md).
+  /// slabs and fragments on Andalusian: docs/design/reconstruction.md, "Parameters").
   double visibility = 1.0;
   /// Edge regularisation lambda_edge per length / sigma (>= 0; 0.1, the Andalusian demo; paper:
   /// 0.01).
