@@ -1,6 +1,6 @@
 #pragma once
 // Plane detection from 3D line segments: RANSAC with multiple support (textural and structural
-// lines), Langlois, Boulch & Marlet, 3DV 2019, section 3; see docs/plane_detection.md.
+// lines), Langlois, Boulch & Marlet, 3DV 2019, section 3; see docs/design/plane_detection.md.
 
 #include <cstdint>
 #include <optional>
@@ -31,7 +31,7 @@ struct PlaneDetectionOptions : DetectionParameters {
   std::int64_t min_iterations = 512;
   /// Adaptive stop: end the search for a plane once the probability of having missed a plane
   /// better than the current best is below 1 - confidence ((0, 1); 0.999). Its trials are the
-  /// valid candidates and the draws of lines more than 2 eps apart (docs/plane_detection.md).
+  /// valid candidates and the draws of lines more than 2 eps apart (docs/design/plane_detection.md).
   double confidence = 0.999;
   /// Bound on failed pair draws (invalid pairs) while searching one plane (>= 1). Replaces the
   /// reference's N_iter x 1e5 draws of its final, failing extraction.
@@ -64,7 +64,7 @@ struct PlaneDetectionOptions : DetectionParameters {
   /// distance to the crease line P ∩ P'.
   bool no_structural_condition = false;
   /// A block (of a grid, block_size > 0) whose RANSAC reaches max_planes is split into its 8
-  /// half-size cubes, detected in its place (docs/plane_detection.md). Off for the eps probes,
+  /// half-size cubes, detected in its place (docs/design/plane_detection.md). Off for the eps probes,
   /// which want only each block's largest planes.
   bool split_blocks_at_cap = true;
   /// Seed of all random streams; same input + options + seed => same output, any thread count.

@@ -1,4 +1,5 @@
-// Acceptance tests of plane detection on linesurf_synth scenes (issue 3, must-show 4).
+// Acceptance tests of plane detection on linesurf_synth scenes: planes recovered within
+// angle and offset tolerances, and the ablations of the paper's robustness study.
 
 #include <gtest/gtest.h>
 
@@ -44,7 +45,7 @@ TEST(DetectPlanesSynth, HouseWithNoiseAndOutliersGivesEveryWellSupportedPlane) {
   for (std::uint64_t seed : {3, 4}) EXPECT_EQ(FractionOfWellSupportedPlanesFound(Make("house", seed)), 1.0);
 }
 
-// Known gap (docs/plane_detection.md): the room's niches put parallel planes 5 to 8 cm apart
+// Known gap (docs/design/plane_detection.md): the room's niches put parallel planes 5 to 8 cm apart
 // (2.5 to 4 eps); slightly tilted planes spanning two of them win, so not every plane is found.
 // This pins the current level so that regressions show.
 TEST(DetectPlanesSynth, RoomWithNoiseAndOutliersGivesMostWellSupportedPlanes) {
@@ -66,10 +67,10 @@ TEST(DetectPlanesSynth, PerBlockDetectionOnACityFindsAtLeastWhatTheWholeSceneRun
   EXPECT_GE(block_fraction, 0.9);
 }
 
-// One plane, one piece (docs/plane_detection.md): at 2 cm noise, 7 % outliers and the residual
-// split, flat roofs of two buildings a few eps apart in height used to come out as one plane
-// tilted across both, about 1 eps under one roof's far edge, which raised a block on that roof
-// (docs/results.md). Counts the flat roofs (true planes with |n_z| > 0.99 above the ground) held
+// One plane, one piece (docs/design/plane_detection.md): at 2 cm noise, 7 % outliers and the residual
+// split, flat roofs of two buildings a few eps apart in height can come out as one plane
+// tilted across both, about 1 eps under one roof's far edge, which raises a block on that roof
+// (docs/design/plane_detection.md, "One plane, one piece"). Counts the flat roofs (true planes with |n_z| > 0.99 above the ground) held
 // by one detected plane within 0.5 degrees and eps at every ground-truth corner: all of them
 // with the support kept in one piece (seeds 1 and 2 of city-4: 4 + 4), fewer without (3 + 1).
 int FlatRoofsHeld(const synth::SyntheticScene& city, const PlaneDetectionOptions& options) {
@@ -124,9 +125,9 @@ TEST(DetectPlanesSynth, FlatRoofsOfBuildingsAtNearbyHeightsAreSeparatePlanes) {
   EXPECT_LT(held_without, held);
 }
 
-// Must-show 3 of issue 3 for the second ablation, in the setting of the robustness study
-// (docs/plane_detection.md): without the structural condition, outliers and near-parallel
-// hijacks cost faces (today 118 vs 109 faces held over 20 trials).
+// The second ablation of the paper's robustness study, in the setting of the robustness study
+// (docs/design/plane_detection.md): without the structural condition, outliers and near-parallel
+// hijacks cost faces (118 vs 109 faces held over 20 trials).
 TEST(DetectPlanesSynth, NoStructuralConditionAblationFindsFewerCubeFacesAmongOutliers) {
   int full = 0;
   int ablation = 0;

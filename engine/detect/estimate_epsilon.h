@@ -1,6 +1,6 @@
 #pragma once
 /// @file estimate_epsilon.h
-/// @brief The inlier tolerance eps from the data (`--epsilon auto`, docs/plane_detection.md):
+/// @brief The inlier tolerance eps from the data (`--epsilon auto`, docs/design/plane_detection.md):
 /// eps = k x the robust scale of the endpoint-to-plane residuals of the segments' planes. With
 /// given planes and memberships the residuals are theirs; otherwise a few probe detections find
 /// the largest planes, starting from eps_0 = 2 % of the median segment length and re-detecting

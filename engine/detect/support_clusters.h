@@ -1,6 +1,6 @@
 #pragma once
 // The spatially separate pieces of a plane's support, and whether one plane stands for several
-// offset faces (internal to engine/detect; docs/plane_detection.md, "One plane, one piece").
+// offset faces (internal to engine/detect; docs/design/plane_detection.md, "One plane, one piece").
 
 #include "engine/core/geometry.h"
 #include "engine/core/strong_id.h"

@@ -1,7 +1,7 @@
 #pragma once
 // A closed mesh read as buildings: connected parts, their faces joined per plane into polygons
 // with holes, each tagged with a semantic class. What the CityJSON writers serialise
-// (docs/formats.md); plain data, world coordinates.
+// (docs/user/formats.md); plain data, world coordinates.
 
 #include "engine/core/geometry.h"
 #include "engine/core/polygon_mesh.h"

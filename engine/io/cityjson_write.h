@@ -1,6 +1,6 @@
 #pragma once
 // Closed meshes as CityJSON 2.0 buildings, as one document or as a CityJSONSeq stream, for city
-// and BIM pipelines (docs/formats.md).
+// and BIM pipelines (docs/user/formats.md).
 
 #include "linesurf/error.h"
 #include "linesurf/options.h"

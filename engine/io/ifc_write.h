@@ -1,6 +1,6 @@
 #pragma once
 // Closed meshes as IFC4 buildings (STEP physical file, ISO 10303-21) for BIM tools
-// (docs/formats.md).
+// (docs/user/formats.md).
 
 #include "linesurf/error.h"
 #include "linesurf/options.h"

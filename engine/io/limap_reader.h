@@ -1,6 +1,6 @@
 #pragma once
 // LIMAP line tracks (`alltracks.txt`, written by limap.util.io.save_txt_linetracks; format in
-// docs/formats.md).
+// docs/user/formats.md).
 
 #include "engine/core/scene.h"
 #include "engine/io/camera_centres.h"

@@ -1,5 +1,5 @@
 #pragma once
-// Line3D++ text output (docs/formats.md; Line3D++ README, reference official-impl.md section 1.1).
+// Line3D++ text output (docs/user/formats.md; Line3D++ README, reference official-impl.md section 1.1).
 
 #include <filesystem>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Polygon mesh files: PLY (binary little-endian by default, ASCII on request), OBJ and OFF
-// (docs/formats.md). The format follows the file extension (.ply, .obj, .off; any case).
+// (docs/user/formats.md). The format follows the file extension (.ply, .obj, .off; any case).
 
 #include <filesystem>
 

@@ -1,5 +1,5 @@
 #pragma once
-// OBJ `v` / `l` records as 3D segments without views (ELSR, LIMAP exports; docs/formats.md).
+// OBJ `v` / `l` records as 3D segments without views (ELSR, LIMAP exports; docs/user/formats.md).
 
 #include <filesystem>
 

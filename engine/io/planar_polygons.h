@@ -1,6 +1,6 @@
 #pragma once
 // Faces of one plane joined into polygons with holes: what GIS and BIM formats store per plane
-// instead of the convex cell faces the engine extracts (docs/formats.md, CityJSON).
+// instead of the convex cell faces the engine extracts (docs/user/formats.md, CityJSON).
 
 #include "engine/core/geometry.h"
 #include "engine/core/polygon_mesh.h"

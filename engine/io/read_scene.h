@@ -1,5 +1,5 @@
 #pragma once
-// Reading a scene from any supported input format (docs/formats.md).
+// Reading a scene from any supported input format (docs/user/formats.md).
 
 #include <filesystem>
 #include <string>

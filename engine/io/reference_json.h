@@ -1,5 +1,5 @@
 #pragma once
-// The reference JSON scene format of the paper's public implementation (docs/formats.md):
+// The reference JSON scene format of the paper's public implementation (docs/user/formats.md):
 // {"lines": [{"pt1", "pt2", "pt_views", "plane_index"?, "residual_per_pt_view"?}],
 //  "planes"?: [{"inlier", "normal"}], other top-level string fields}.
 

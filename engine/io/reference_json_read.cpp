@@ -1,5 +1,5 @@
 // Streaming (SAX) reader of the reference JSON format. A DOM parse of a 100 MB file costs several
-// times the file size in memory (docs/formats.md has the measurements); this reader keeps only
+// times the file size in memory (docs/user/formats.md has the measurements); this reader keeps only
 // the path to the current value and the scene being built.
 
 #include <nlohmann/json.hpp>

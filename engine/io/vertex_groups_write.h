@@ -1,5 +1,5 @@
 #pragma once
-// Planes and their inlier segments as PolyFit / abspy vertex groups (.vg, docs/formats.md).
+// Planes and their inlier segments as PolyFit / abspy vertex groups (.vg, docs/user/formats.md).
 
 #include "linesurf/error.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file compute_evidence.h
 /// @brief Evidence of the line segments on the cells of one complex: the energy terms of
-/// DESIGN 2.3 as a solver::EnergyInput (see docs/reconstruction.md).
+/// DESIGN 2.3 as a solver::EnergyInput (see docs/design/reconstruction.md).
 ///
 /// Every segment contributes per unit of its length, divided by the scale sigma. The segment is
 /// integrated with K midpoint samples (K = ceil(samples_per_sigma * length / sigma), clamped to
@@ -85,7 +85,7 @@ enum class BoundaryMode {
 /// The crease weight of an interior scene when none is given. In a scene seen from inside, most
 /// structural segments are concave room corners, where the paper's term is satisfied by the floor
 /// alone and an untextured wall between two rooms vanishes; 0.2 brings it back without costing
-/// the other scenes more than seed noise (docs/results.md). Exterior scenes get 0: facade lines
+/// the other scenes more than seed noise (docs/user/results.md, "Crease term"). Exterior scenes get 0: facade lines
 /// that only happen to be coplanar (sills, storey bands) give segments a second, false plane,
 /// and a crease term there steps the walls at any weight that helps the interiors.
 inline constexpr double kInteriorCreaseWeight = 0.2;

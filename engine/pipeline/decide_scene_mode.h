@@ -3,7 +3,7 @@
 /// @brief The automatic choice between an exterior scene (an object seen from outside: cells on
 /// the box empty) and an interior scene (a room seen from inside: cells on the box full).
 ///
-/// Rule (docs/reconstruction.md): a viewpoint is enclosed when all but at most `open_rays` of 14
+/// Rule (docs/design/reconstruction.md): a viewpoint is enclosed when all but at most `open_rays` of 14
 /// rays from it (the 6 axis directions and the 8 diagonals) meet a plane at a point that the
 /// plane's inlier segments surround: in the plane, each of 8 directions from that point crosses an
 /// inlier (inliers lengthened by `gap_bridge` of their length at each end, which bridges the gaps
@@ -14,7 +14,8 @@
 ///
 /// Why surround and not the inliers' bounding box: a plane whose inliers are spread over a
 /// whole city (the floor bands of every building at one height) has a bounding box that covers
-/// the streets, so every street viewpoint looked enclosed by it (issue 12: 763 of 1,100).
+/// the streets, so every street viewpoint would look enclosed by it (763 of the 1,100
+/// viewpoints of a synthetic city did).
 
 #include "engine/core/run_context.h"
 #include "engine/core/scene.h"
@@ -32,7 +33,7 @@ struct SceneModeOptions {
   /// ([0, 14]). 3: a plane that lost the segments of one of its edges to other planes leaves a
   /// few rays open from inside a room (synth room at 2 cm, seed 3: 3 of 14 viewpoints with every
   /// ray closed, 12 with at most 3 open), while outside a building or in a street the sky and
-  /// the directions away from the walls leave at least 6 open (docs/reconstruction.md).
+  /// the directions away from the walls leave at least 6 open (docs/design/reconstruction.md).
   int open_rays = 3;
   /// At most this many observing viewpoints are examined, evenly spaced in index order (>= 1):
   /// the decision is a majority, which a sample of 1,000 estimates within a few points (well

@@ -107,8 +107,8 @@ TEST(DecideSceneMode, ViewpointsInsideABoxAreEnclosed) {
 
 // The wall x = 6 lost the vertical edge at y = 5 to its other plane only (as detection gives a
 // crease segment to a spurious plane): from inside, the ray along +x meets the wall at a point
-// that no inlier closes toward +y. One open ray of 14 leaves the viewpoint enclosed; with no
-// open ray allowed (the rule before session 15) the room looked like an exterior.
+// that no inlier closes toward +y. One open ray of 14 leaves the viewpoint enclosed; a rule
+// that allowed no open ray would call the room an exterior.
 TEST(DecideSceneMode, ARayOrTwoOpenThroughAWallMissingAnEdgeStillEncloses) {
   BoxEdgesScene boxes;
   boxes.AddBox(Vec3(0, 0, 0), Vec3(6, 5, 3));
@@ -192,8 +192,8 @@ TEST(DecideSceneMode, ViewpointsAroundABoxAreNot) {
 }
 
 // A street between two buildings whose walls, ground and roofs lie on shared planes: the
-// bounding boxes of those planes' inliers cover the street in every direction (the rule before
-// issue 12 counted such viewpoints as enclosed), but nothing surrounds the street's sky.
+// bounding boxes of those planes' inliers cover the street in every direction (a bounding-box rule
+// would count such viewpoints as enclosed), but nothing surrounds the street's sky.
 TEST(DecideSceneMode, StreetBetweenBuildingsOnSharedPlanesIsNotEnclosed) {
   BoxEdgesScene boxes;
   boxes.AddBox(Vec3(0, 0, 0), Vec3(20, 20, 12));

@@ -1,7 +1,7 @@
 #pragma once
 /// @file judge_result.h
-/// @brief Whether a finished reconstruction is what the user asked for (issue 12: never a
-/// silent wrong result). Warnings for results that are usable but suspect, an error for results
+/// @brief Whether a finished reconstruction is what the user asked for: never a silent
+/// wrong result. Warnings for results that are usable but suspect, an error for results
 /// that are not (docs/user/errors.md lists every message).
 
 #include "linesurf/error.h"

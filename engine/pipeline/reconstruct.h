@@ -1,7 +1,7 @@
 #pragma once
 /// @file reconstruct.h
 /// @brief The whole method on one box (DESIGN 2): sanitise -> planes (detected or given) -> box
-/// -> cell complex -> evidence -> LP labelling -> surface. See docs/reconstruction.md.
+/// -> cell complex -> evidence -> LP labelling -> surface. See docs/design/reconstruction.md.
 ///
 /// Every stage works on one box with no global state, so the block engine (DESIGN 3) can call
 /// the per-box stages (BuildCellComplex, ComputeEvidence, SolveLabeling, ExtractSurface) itself.
@@ -98,7 +98,7 @@ struct ReconstructOptions {
   /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines, RemoveFloatingFragments) when another
   /// component holds more; RunStats::removed_fragments counts them. Default true: pieces behind
-  /// one or two lines (clutter, vegetation) are not the building (docs/reconstruction.md).
+  /// one or two lines (clutter, vegetation) are not the building (docs/design/reconstruction.md).
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
@@ -116,7 +116,7 @@ struct ReconstructOptions {
   [[nodiscard]] Status Validate() const;
 };
 
-/// Numbers of a run (docs/reconstruction.md lists the report keys): the public struct.
+/// Numbers of a run (docs/design/reconstruction.md lists the report keys): the public struct.
 using RunStats = ::linesurf::ReconstructStats;
 
 struct ReconstructResult {

@@ -68,7 +68,7 @@ struct SanitizeResult {
   std::vector<std::string> warnings;
 };
 
-/// @brief Drops or fixes every bad element of `scene` and recentres it (docs/formats.md lists the
+/// @brief Drops or fixes every bad element of `scene` and recentres it (docs/user/formats.md lists the
 /// repairs). Ids of kept segments, viewpoints and planes keep their relative order.
 /// Deterministic and serial (linear time).
 /// @return kInvalidOptions when `options` is invalid; kInvalidInput when inconsistent arrays

@@ -1,6 +1,6 @@
 #pragma once
 /// @file surface_quality.h
-/// @brief Quality of a reconstruction without ground truth (docs/evaluation.md): how well the
+/// @brief Quality of a reconstruction without ground truth (docs/user/evaluation.md): how well the
 /// surface fits the segments that support a plane, whether the surface blocks the sight rays of
 /// the observations, its connected components (a component holding fewer than 3 supported
 /// lines is a floating fragment) and the planes on which no face lies. Shared by `linesurf evaluate

@@ -1,5 +1,5 @@
 #pragma once
-// Builds the exact convex cell complex of planes inside a box (DESIGN.md section 2.2): the box is
+// Builds the exact convex cell complex of planes inside a box (docs/design/cell_complex.md): the box is
 // split by every plane that crosses its interior, with full incidence (see
 // engine/core/cell_complex.h for the conventions). Vertices are plane triples; every side
 // decision is an exact predicate; doubles are only rounded output.

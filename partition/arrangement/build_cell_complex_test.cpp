@@ -16,7 +16,7 @@
 namespace linesurf::partition {
 namespace {
 
-/// Relative error allowed on the sum of cell volumes (issue 4).
+/// Relative error allowed on the sum of cell volumes against the box volume.
 constexpr double kVolumeRelativeTolerance = 1e-9;
 
 Box3 MakeBox(const Vec3& lo, const Vec3& hi) {

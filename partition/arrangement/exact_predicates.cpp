@@ -16,7 +16,7 @@ namespace {
 
 // Unprotected intervals need the rounding mode upward; each predicate sets it once around its
 // interval part (WithUpwardRounding) instead of once per operation, as Interval_nt<true> does
-// (city-100: evidence 13.2 -> 3.2 s, the same bytes; docs/benchmarks.md). The exact fallbacks
+// (city-100: evidence 13.2 -> 3.2 s, the same bytes). The exact fallbacks
 // run in the default mode.
 using Interval = CGAL::Interval_nt<false>;
 using Exact = CGAL::Mpzf;

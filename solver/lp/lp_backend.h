@@ -25,7 +25,7 @@
 ///               auto_clp_max_columns LP columns, else "pdhg-energy" (see
 ///               docs/design/lp_backend.md for the measurements). "band" only above
 ///               auto_band_min_columns, which is off by default: band changes the result
-///               (measured on an Andalusian crop, docs/results.md "Integral labelling").
+///               (measured on an Andalusian crop, docs/user/results.md "Integral labelling").
 ///  - "blocks":  per-block solve for large complexes (block_labeling.h), given a partition of
 ///               the cells into blocks: each block's interior energy solved by
 ///               LabelingOptions::block_backend, in parallel, each with a halo of its
@@ -69,12 +69,12 @@ struct LabelingOptions {
   /// (0, 1e-2]. Clp's default.
   double clp_tolerance = 1e-7;
   /// Relative tolerance of pdhg on primal residual, dual residual and duality gap; range
-  /// (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our tests (docs/solver.md).
+  /// (0, 1e-1]. 1e-4 keeps labels equal to Clp's on our tests (docs/design/solver.md).
   double pdhg_tolerance = 1e-4;
   /// Relative duality gap at which pdhg-energy stops; range (0, 1e-1]. Its relaxed optimum is
   /// only rounded: on Andalusian 1e-3 takes 9,536 iterations where 1e-4 took 14,272, and the
   /// final labels' energy is within 0.3 % (3,081.5 vs 3,096.3 with detected planes, 5,287.8 vs
-  /// 5,279.9 with the given ones; docs/solver.md, "pdhg-energy tolerance").
+  /// 5,279.9 with the given ones; docs/design/solver.md, "pdhg-energy tolerance").
   double pdhg_energy_tolerance = 1e-3;
   /// Iteration cap of pdhg and pdhg-energy; >= 1. Reaching it is a failure (kSolverFailed).
   std::int64_t pdhg_max_iterations = 200000;
@@ -85,11 +85,11 @@ struct LabelingOptions {
   /// "auto" uses the band strategy above this many LP columns. Default: never. Band is faster
   /// on whole real scenes (the full LP of Andalusian's 3e5-cell complex did not converge with
   /// pdhg in 26 min) but changes the result: on a 47-plane Andalusian crop its labels' energy is
-  /// 1 % above the full LP's with 36 % fewer full cells (docs/results.md, "Integral labelling").
+  /// 1 % above the full LP's with 36 % fewer full cells (docs/user/results.md, "Integral labelling").
   std::size_t auto_band_min_columns = std::numeric_limits<std::size_t>::max();
   /// "auto" uses the per-block solve above this many LP columns, when a partition of the cells
-  /// into more than one block is given; >= 0. 20,000,000: since pdhg-energy's weighted steps
-  /// (session 14) the global solve is better and cheaper at every size measured, up to
+  /// into more than one block is given; >= 0. 20,000,000: with pdhg-energy's weighted steps
+  /// the global solve is better and cheaper at every size measured, up to
   /// city-1000's 7.0M columns (23 s to a 0.04 % gap, where the per-block solve took 221 s and
   /// ended 1.1 % higher); above that the per-block solve keeps each solve's size bounded
   /// (docs/design/lp_backend.md, "Per-block solve").
@@ -124,7 +124,7 @@ struct LabelingOptions {
   /// Sweeps of local search after rounding (each free cell, in id order, flips when that lowers
   /// the energy; stops early when a sweep flips nothing); 0 = plain rounding as in the paper;
   /// range [0, 1000]. It only ever lowers the energy of the labels: on grid energies with
-  /// parity terms the rounded labels' energy drops by 30-40 % (docs/solver.md).
+  /// parity terms the rounded labels' energy drops by 30-40 % (docs/design/solver.md).
   int local_search_passes = 10;
   /// Sweeps of group moves after the local search (group_moves.h: the free cells of one term
   /// take their best joint labelling); 0 = none; range [0, 1000]. Never raises the energy.

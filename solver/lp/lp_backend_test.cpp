@@ -378,7 +378,7 @@ LabelingResult SolveWith(const EnergyInput& e, LabelingOptions options) {
   return result ? std::move(result).value() : LabelingResult{};
 }
 
-// The labelling of round 1: rounding and single-cell local search only.
+// The labelling without its improvement: rounding and single-cell local search only.
 LabelingOptions RoundingAndLocalSearch(const std::string& backend) {
   LabelingOptions o;
   o.backend = backend;

@@ -1,5 +1,5 @@
 // The per-block labelling ("blocks", solver/lp/block_labeling.h) against the global solve
-// (docs/benchmarks.md, "Per-block labelling"). Prints Markdown rows.
+// (docs/user/benchmarks.md, "Studies of one stage"). Prints Markdown rows.
 //   linesurf_block_labelling_study grids SIZES EDGES [global=clp] [threads=2] [inner=auto]
 //       solver::testing::GridEnergy n^3 for each n of SIZES, cut into cubes of each edge of
 //       EDGES (comma lists); the global solve with the backend `global` (clp, pdhg, none).
@@ -229,7 +229,7 @@ int SceneStudy(const char* path,
   ctx.num_threads = threads;
   Scene scene;
   if (planes.rfind("crop:", 0) == 0) {
-    // The crop of docs/results.md, "Integral labelling": given planes, reference weights.
+    // The crop of docs/user/results.md, "Integral labelling": given planes, reference weights.
     const std::vector<double> b = ParseList(planes.c_str() + 5);
     if (b.size() != 6) {
       std::fprintf(stderr, "block_labelling_study: crop: needs 6 numbers\n");

@@ -1,4 +1,4 @@
-// Study of the block partition (docs/benchmarks.md, "Block partition"): for a scene with planes
+// Study of the block partition (docs/user/benchmarks.md, "Studies of one stage"): for a scene with planes
 // and memberships (reference JSON with plane_index, or a synthetic scene's lines.json), the
 // monolithic complex of the scene box against the block complexes at several block sizes and
 // support margins. Prints one Markdown row per setting.

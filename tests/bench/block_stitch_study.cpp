@@ -1,4 +1,4 @@
-// Study of the stitch (docs/benchmarks.md, "Stitch"): for a synthetic scene (a `linesurf synth`
+// Study of the stitch (docs/user/benchmarks.md, "Studies of one stage"): for a synthetic scene (a `linesurf synth`
 // directory: lines.json with the true planes, ground_truth.ply), the block partition at several
 // block sizes and margins, cells labelled full when their centroid lies inside the ground truth
 // (no solver), then ExtractBlockSurface at 1 and `threads` threads. Prints one Markdown row per

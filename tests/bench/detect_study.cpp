@@ -1,4 +1,4 @@
-// Studies of docs/plane_detection.md, printed as Markdown tables:
+// Studies of docs/design/plane_detection.md, printed as Markdown tables:
 //   linesurf_detect_study robustness [exhaustive_max=64] [noise_model=ball|gauss] [trials=20]
 //                                    [face=held|near]
 //       The paper's robustness toy: the 12 edges of a cube of side 2 (linesurf_synth "cube"),

@@ -1,4 +1,4 @@
-// Reference JSON read/write throughput on generated scenes (docs/formats.md has the 100 MB
+// Reference JSON read/write throughput on generated scenes (docs/user/formats.md has the 100 MB
 // measurement against a DOM parse). Run: build/bin/linesurf_bench_io --benchmark_repetitions=5
 // --benchmark_report_aggregates_only=true (repetitions + median against machine noise).
 

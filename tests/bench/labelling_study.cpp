@@ -1,4 +1,4 @@
-// The integral labelling against the integer optimum (docs/results.md, "Integral labelling"),
+// The integral labelling against the integer optimum (docs/user/results.md, "Integral labelling"),
 // printed as Markdown tables. Every row solves one energy several ways: the LP bound (Clp), the
 // labels right after rounding, after local search, after the default improvement, and the
 // integer optimum by Cbc (branch and cut; "stopped" when it does not prove optimality within
@@ -11,8 +11,8 @@
 //   linesurf_labelling_study andalusian PATH XMIN,YMIN,ZMIN,XMAX,YMAX,ZMAX [cbc_seconds=600]
 //       the Andalusian segments with both ends in the box (world frame), the given planes that
 //       keep a member, reference weights (textural 1, structural 1, visibility 1, edge 0.1,
-//       corner 0.1, sigma 1): the full LP (pdhg) and the band strategy, each with round 1's
-//       labelling (rounding, local search) and with today's default, then Cbc.
+//       corner 0.1, sigma 1): the full LP (pdhg) and the band strategy, each with the
+//       labelling of rounding and local search alone and with the default, then Cbc.
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/reconstruct.h"

@@ -1,4 +1,4 @@
-// The stitch on the synthetic families (issue 10, must-show 2, without the solver): block
+// The stitch on the synthetic families, without the solver: block
 // partitions of synth house, lshape, room, floor, city-4 and city-16 with their true planes, cells
 // labelled full when their centroid lies inside the ground truth, stitched into one mesh (block
 // facets, and coplanar faces merged) that `linesurf evaluate`'s checks find closed, 2-manifold,

@@ -1,5 +1,5 @@
-// Every scene input format with its camera model through `linesurf reconstruct` and `detect`
-// (issue 13, must-show 3): the synthetic house's lines written by the test as Line3D++ with an
+// Every scene input format with its camera model through `linesurf reconstruct` and `detect`:
+// the synthetic house's lines written by the test as Line3D++ with an
 // NVM model, with a COLMAP text and a COLMAP binary model, and as LIMAP alltracks.txt with its
 // COLMAP model give the same mesh bytes and the same planes as the reference JSON; bad and
 // missing camera ids exit with 3 naming the file and line.

@@ -82,7 +82,7 @@ std::size_t Count(const std::string& text, const std::string& what) {
 // Lines that say "on no plane" (empty plane_index lists) in a file without planes: convert
 // keeps the lists (the reference's reconstruction requires the key on every line) and the
 // empty plane list, with and without --sanitize, and converting the output again gives the same
-// bytes (issue 13: the lists were dropped).
+// bytes (the empty lists are kept, not dropped).
 TEST_F(CliIo, ConvertKeepsEmptyPlaneIndexListsWithoutPlanes) {
   const auto path = WriteText(dir_ / "unassigned.json", R"({"lines": [
     {"pt1": [0, 0, 0], "pt2": [2, 0, 0], "pt_views": [[0, 5, 0]], "plane_index": []},

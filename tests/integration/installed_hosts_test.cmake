@@ -1,4 +1,4 @@
-# Must-show 1 of issue 13 (C++ and C parts): installs linesurf into a fresh prefix, builds the
+# The installed package for C++ and C hosts: installs linesurf into a fresh prefix, builds the
 # out-of-tree hosts docs/examples/host_cpp and host_c against it with find_package(linesurf 1),
 # runs them on the bundled house and checks their meshes are byte for byte the CLI's.
 # Run by CTest (tests/integration/CMakeLists.txt) with -DBUILD_DIR= -DSOURCE_DIR= -DCLI= -DWORK=

@@ -1,4 +1,5 @@
-// End-to-end reconstruction on synthetic scenes with ground truth (issue 5, must-show 1, 2, 5).
+// End-to-end reconstruction on synthetic scenes with ground truth: accuracy against the ground
+// truth, closed and oriented meshes, the same bytes for any thread count.
 
 #include "engine/pipeline/reconstruct.h"
 
@@ -158,7 +159,7 @@ TEST(Reconstruct, CityOfSeveralBuildingsIsClosedManifoldAndAccurate) {
 
 // The floor's inner walls carry no textural segment; their creases with the floor and ceiling
 // are explained by the floor alone under the paper's structural term. The crease term (on by
-// default in interior scenes) brings them back (docs/results.md, "Crease term").
+// default in interior scenes) brings them back (docs/user/results.md, "Crease term").
 TEST(Reconstruct, CreaseTermKeepsTheUntexturedInnerWallsOfAFloor) {
   const synth::SyntheticScene s = Make("floor");
   ASSERT_TRUE(s.interior);
@@ -200,7 +201,7 @@ TEST(Reconstruct, SameSeedGivesByteIdenticalMeshesForAnyThreadCount) {
   ExpectSameBytesForAnyThreadCount(s.scene, o, [](const pipeline::ReconstructResult&) {});
 }
 
-// Issue 10, must-show 1: a block engine of one block is the monolithic method, to the byte.
+// A block engine of one block is the monolithic method, to the byte.
 TEST(Reconstruct, BlockEngineWithOneBlockGivesTheMonolithicMeshBytes) {
   const auto dir = testing::FreshTempDir();
   for (const char* family : {"house", "lshape"}) {
@@ -225,7 +226,7 @@ TEST(Reconstruct, BlockEngineWithOneBlockGivesTheMonolithicMeshBytes) {
   }
 }
 
-// Issue 10, must-show 2 (the tested part): many blocks, on given and on detected planes, closed,
+// Many blocks, on given and on detected planes, closed,
 // 2-manifold, oriented, conforming, not self-intersecting and accurate, on the six families. The
 // rooms' walls are dense enough that the size rule stops at its floor; the others' are not.
 TEST(Reconstruct, BlockEngineWithManyBlocksIsClosedManifoldConformingAndAccurate) {
@@ -280,7 +281,7 @@ std::size_t NonConvexFaces(const PolygonMesh& mesh) {
   return count;
 }
 
-// Issue 10, item 6: --merge-coplanar gives the same surface in fewer faces, some of them
+// --merge-coplanar gives the same surface in fewer faces, some of them
 // non-convex (the lshape's roof and ground are one L each), and every figure measured on it
 // (closed, manifold, volume, quality without ground truth, precision and completeness) is the
 // one of the blocks' facets.
@@ -365,7 +366,7 @@ TEST(Reconstruct, BlockSizeWithTheMonolithicEngineIsInvalidOptions) {
   EXPECT_NE(s.error().message.find("blocks engine only"), std::string::npos);
 }
 
-// Issue 10, must-show 6: same bytes for 1, 2, 3 and 8 threads on a multi-block scene.
+// Same bytes for 1, 2, 3 and 8 threads on a multi-block scene.
 TEST(Reconstruct, BlockEngineGivesTheSameBytesForAnyThreadCount) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
@@ -407,7 +408,7 @@ TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
   EXPECT_TRUE(HasCrowdedBlocksWarning(uncut));
 }
 
-// Issue 10 item 5: "auto" solves a large labelling per block, on the k-d blocks of the
+// "auto" solves a large labelling per block, on the k-d blocks of the
 // monolithic complex and on the block engine's own blocks (here "large" is lowered to any size),
 // says so in the report, and gives the same bytes for any thread count.
 TEST(Reconstruct, AutoSolvesLargeLabellingsPerBlockWithTheSameBytesForAnyThreadCount) {
@@ -490,7 +491,7 @@ Scene Scaled(Scene scene, double scale) {
 }
 
 TEST(Reconstruct, SceneInOtherUnitsGivesTheSameMeshScaled) {
-  // Must-show 4 of issue 11: metres and the same scene x 37.1 (SfM units), default options
+  // Metres and the same scene x 37.1 (SfM units), default options
   // (eps auto, planes detected).
   constexpr double kScale = 37.1;
   const synth::SyntheticScene s = Make("house");

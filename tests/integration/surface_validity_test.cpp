@@ -1,4 +1,4 @@
-// Issue 12, must-show 5: reconstructions with default options that `linesurf evaluate` itself
+// Reconstructions with default options that `linesurf evaluate` itself
 // reports closed, 2-manifold and not self-intersecting: the `self-intersecting-floor` reproducer
 // (../shared/data/repro) and `linesurf synth floor` seeds 1-20.
 

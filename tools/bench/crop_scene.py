@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Crop a reference JSON scene to a box, for quick experiments on a part of a large scene
-(docs/results.md, Andalusian crop).
+(the Andalusian crop of docs/user/results.md, "Integral labelling").
 
 Keeps the lines with both endpoints in the box (with their views), and the planes that the kept
 lines refer to, renumbered in their original order; plane_index entries follow.

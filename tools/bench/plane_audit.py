@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Where a synthetic reconstruction goes wrong (docs/results.md, "What is left, diagnosed").
+"""Where a synthetic reconstruction goes wrong: which detected planes and which faces.
 
   plane_audit.py planes SYNTH_DIR DETECTED.json
       every plane of DETECTED.json (`linesurf detect` output for SYNTH_DIR/lines.json): normal,

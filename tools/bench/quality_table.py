@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Quality table of issue 11 (docs/results.md): synthetic scenes with ground truth at two noise
+"""Quality table (docs/user/results.md): synthetic scenes with ground truth at two noise
 conditions, several seeds, default options (or the options given after --), and the figures
 without ground truth of every run.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""End-to-end benchmark of the linesurf CLI (docs/benchmarks.md).
+"""End-to-end benchmark of the linesurf CLI (docs/user/benchmarks.md).
 
 For every scene of a manifest: generate the input with `linesurf synth` (synthetic scenes, from a
 seed) or take it from ../shared (real scenes, skipped with a message when absent), run

@@ -1,4 +1,4 @@
-// `linesurf detect INPUT -o OUT.json`: plane detection only (docs/plane_detection.md).
+// `linesurf detect INPUT -o OUT.json`: plane detection only (docs/design/plane_detection.md).
 
 #include "linesurf/linesurf.h"
 

@@ -1,5 +1,5 @@
 // `linesurf reconstruct INPUT -o MESH.{ply,obj,off,city.json,city.jsonl,ifc}`: the whole method
-// (docs/reconstruction.md).
+// (docs/design/reconstruction.md).
 
 #include "linesurf/linesurf.h"
 

@@ -1,5 +1,5 @@
 // `linesurf synth FAMILY --seed S [--size N] [--noise SIGMA] [--outliers FRACTION] -o DIR`:
-// a seeded synthetic scene with ground truth (docs/synthetic.md).
+// a seeded synthetic scene with ground truth (docs/user/synthetic.md).
 
 #include "engine/core/parallel.h"
 #include "engine/io/mesh_io.h"

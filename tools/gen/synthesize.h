@@ -3,7 +3,7 @@
 /// @brief Seeded synthetic scenes with ground truth: 3D segments seen from viewpoints, the solid
 /// they were drawn from (closed, 2-manifold, outward oriented) and the true planes.
 ///
-/// Families (metric units, see docs/synthetic.md): "cube" (the 12 edges of a cube of side 2, the
+/// Families (metric units, see docs/user/synthetic.md): "cube" (the 12 edges of a cube of side 2, the
 /// robustness toy of Langlois et al. 2019), "house" (gable-roofed box with windows and a door),
 /// "lshape" (an L-shaped flat-roofed building), "room" (the inside of a room with niches and a
 /// table; viewpoints inside), "floor" (a storey of three rooms with doors between them, seen from
@@ -67,7 +67,7 @@ struct SynthSpec {
   std::optional<double> max_trim;
   /// Views listed per segment: the nearest viewpoints that see it, at most this many (1..64).
   int max_views = 8;
-  /// Residual split, as the reference's converter makes Andalusian (docs/synthetic.md): every
+  /// Residual split, as the reference's converter makes Andalusian (docs/user/synthetic.md): every
   /// (segment, view) becomes its own sub-segment with that one view, the part of the segment's
   /// (noisy) line that one camera saw (each end loses a uniform 0..max_view_trim of its length)
   /// shrunk by 5 % (2.5 % at each end). Outliers are split too. Default false.

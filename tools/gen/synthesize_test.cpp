@@ -274,7 +274,7 @@ TEST(Synthesize, HouseViewsAreOcclusionCorrect) {
   EXPECT_GT(north, 10u);
 }
 
-/// The room's matter, as documented in docs/synthetic.md (independent of the generator).
+/// The room's matter, as documented in docs/user/synthetic.md (independent of the generator).
 bool InRoomMatter(const Vec3& p) {
   const auto in = [&](Vec3 lo, Vec3 hi) {
     return (p.array() > lo.array()).all() && (p.array() < hi.array()).all();

@@ -1,6 +1,6 @@
 #pragma once
 // The meta file of a synthetic scene (meta.json): spec, true planes, kind and true planes of every
-// segment, ground-truth summary. Format in docs/synthetic.md.
+// segment, ground-truth summary. Format in docs/user/synthetic.md.
 
 #include <filesystem>
 #include <string>

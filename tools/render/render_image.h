@@ -55,7 +55,7 @@ struct RenderOptions {
   [[nodiscard]] Status Validate() const;
 };
 
-/// Colours of segments by plane membership (documented in docs/evaluation.md).
+/// Colours of segments by plane membership (documented in docs/user/evaluation.md).
 inline constexpr std::array<std::uint8_t, 3> kColourNoPlane{150, 150, 150};
 inline constexpr std::array<std::uint8_t, 3> kColourTextural{40, 100, 220};
 inline constexpr std::array<std::uint8_t, 3> kColourStructural{215, 40, 40};

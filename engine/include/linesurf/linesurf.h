@@ -99,7 +99,7 @@ class LINESURF_API Reconstruction {
 };
 
 /// @brief Reads a scene file: reference JSON, Line3D++ .txt or LIMAP alltracks.txt (with
-/// options.nvm or options.colmap) or OBJ lines (docs/formats.md). World coordinates as stored.
+/// options.nvm or options.colmap) or OBJ lines (docs/user/formats.md). World coordinates as stored.
 /// @return kInvalidOptions (unknown format, missing or extra camera files), kInvalidInput
 /// naming the file and the line or JSON path at fault.
 [[nodiscard]] LINESURF_API Expected<ReadSceneResult> ReadScene(
@@ -107,7 +107,7 @@ class LINESURF_API Reconstruction {
 
 /// @brief The validation every reconstruction starts with, on its own: drops non-finite and
 /// zero-length segments, bad viewpoints, observations and planes, repeated memberships (each
-/// counted in the warnings; docs/formats.md lists the repairs). Residuals and extra fields are
+/// counted in the warnings; docs/user/formats.md lists the repairs). Residuals and extra fields are
 /// kept for the segments that stay.
 /// @return kInvalidInput (an index out of range, no usable segment left).
 [[nodiscard]] LINESURF_API Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept;
@@ -127,7 +127,7 @@ class LINESURF_API Reconstruction {
                                             const MeshWriteOptions& options = {}) noexcept;
 
 /// @brief Writes the planes of `scene` as PolyFit / abspy vertex groups (.vg: the segments'
-/// endpoints, grouped by plane; docs/formats.md). Written to a temporary name and renamed.
+/// endpoints, grouped by plane; docs/user/formats.md). Written to a temporary name and renamed.
 /// @return kInvalidInput (an index out of range, a non-finite value, an unwritable path), naming
 /// the file.
 [[nodiscard]] LINESURF_API Status WriteVertexGroups(const std::string& path,
@@ -135,14 +135,14 @@ class LINESURF_API Reconstruction {
 
 /// @brief The validity classes of `mesh` as the boundary of solids (MeshValidity: closed,
 /// 2-manifold, oriented, coincident vertices, degenerate, zero-area and non-planar faces,
-/// self-intersection; docs/formats.md "Validity"), the checker Reconstruct runs on every result.
+/// self-intersection; docs/user/formats.md "Validity"), the checker Reconstruct runs on every result.
 /// @return kInvalidInput (an index out of range, inconsistent face offsets, a coordinate
 /// beyond the bound).
 [[nodiscard]] LINESURF_API Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept;
 
 /// @brief Writes a mesh as CityJSON 2.0: one Building per connected component, a Solid (LoD 2.2)
 /// whose surfaces are the component's faces joined per plane (holes as inner rings), a
-/// semantic surface per plane of `planes` and class (docs/formats.md); the same bytes as
+/// semantic surface per plane of `planes` and class (docs/user/formats.md); the same bytes as
 /// `linesurf reconstruct -o m.city.json`. Written to a temporary name and renamed.
 /// @return kInvalidInput (bad face, non-finite coordinate, unwritable path), kInvalidOptions
 /// (options.crs not "EPSG:CODE").
@@ -171,7 +171,7 @@ class LINESURF_API Reconstruction {
 /// @brief Writes a mesh as IFC4 (STEP text) for BIM tools: an IfcBuilding per connected
 /// component with one IfcBuildingElementProxy whose faceted B-rep faces are those of
 /// WriteCityJson (one per plane, holes as inner bounds), metres, the site placed at the mesh's
-/// minimum corner in whole metres, options.crs as IfcProjectedCRS (docs/formats.md); the same
+/// minimum corner in whole metres, options.crs as IfcProjectedCRS (docs/user/formats.md); the same
 /// bytes as `linesurf reconstruct -o m.ifc`. Written to a temporary name and renamed.
 /// @return as WriteCityJson.
 [[nodiscard]] LINESURF_API Status WriteIfc(const std::string& path,

@@ -18,10 +18,10 @@ inline namespace v1 {
 /// Largest num_threads accepted (the CLI's -j bound too).
 inline constexpr int kMaxThreads = 256;
 
-/// RANSAC plane detection with multiple support (docs/plane_detection.md).
+/// RANSAC plane detection with multiple support (docs/design/plane_detection.md).
 struct DetectionParameters {
   /// Inlier tolerance eps (> 0). Unset (default): estimated from the data (eps auto,
-  /// docs/plane_detection.md), so metric scenes, SfM units and noisier clouds need no value.
+  /// docs/design/plane_detection.md), so metric scenes, SfM units and noisier clouds need no value.
   /// Paper: 2 cm on metric scenes.
   std::optional<double> epsilon;
   /// eps auto: eps = epsilon_over_noise x the robust noise scale of the endpoint-to-plane
@@ -49,7 +49,7 @@ struct DetectionParameters {
   /// eps / 2 at one of its endpoints), the plane keeps only its largest piece (refitted) and the
   /// others stay free. Stops a plane tilted across two parallel roofs or walls of different
   /// buildings a few eps apart, which has more inliers than either ([0, 1000]; 0 = off, the
-  /// paper's method; docs/plane_detection.md).
+  /// paper's method; docs/design/plane_detection.md).
   double support_gap = 8.0;
   /// Segments on one infinite line (every endpoint within this x eps of the other's line), such
   /// as the per-camera parts of one 3D line in the reference's residual inputs, are detected as
@@ -95,7 +95,7 @@ enum class SceneMode {
   kAuto,      ///< decided from the viewpoints and planes (reported in the stats)
 };
 
-/// LP backend of the labelling (docs/solver.md).
+/// LP backend of the labelling (docs/design/solver.md).
 enum class SolverBackend {
   kAuto,        ///< maxflow when exact, else blocks (large LPs) / clp / pdhg-energy by size
   kClp,         ///< COIN-OR Clp dual simplex: exact, the reference
@@ -108,13 +108,13 @@ enum class SolverBackend {
   kPdhgEnergy,  ///< first-order primal-dual on the energy's saddle form: no slack columns
 };
 
-/// How the cell complex is built (docs/block_engine.md).
+/// How the cell complex is built (docs/design/block_engine.md).
 enum class ComplexEngine {
   kMonolithic,  ///< one arrangement of the scene box
   kBlocks,      ///< per-block arrangements of ReconstructOptions::block_size (0: automatic)
 };
 
-/// Weights of the energy terms (docs/reconstruction.md). These, and only these, can change in
+/// Weights of the energy terms (docs/design/reconstruction.md). These, and only these, can change in
 /// Reconstruction::Solve without rebuilding the cell complex.
 struct EnergyWeights {
   /// Every weight is in [0, 1e6] (beyond, the LP loses all precision).
@@ -126,10 +126,10 @@ struct EnergyWeights {
   /// through its crease pays this, per length / sigma, shared by the segment's views (0 = the
   /// paper's energy). Unset: 0.2 in an interior scene, 0 in an exterior one, where lines that
   /// only happen to be coplanar (a row of sills on four walls) make false creases
-  /// (docs/reconstruction.md, measured in docs/results.md).
+  /// (docs/design/reconstruction.md; measured in docs/user/results.md, "Crease term").
   std::optional<double> crease;
   /// Visibility lambda_vis (>= 0; 1, the reference's Andalusian demo; paper: 0.1, which leaves
-  /// slabs and fragments on Andalusian: docs/results.md).
+  /// slabs and fragments on Andalusian: docs/design/reconstruction.md, "Parameters").
   double visibility = 1.0;
   /// Edge regularisation lambda_edge per length / sigma (>= 0; 0.1, the Andalusian demo; paper:
   /// 0.01).
@@ -153,7 +153,7 @@ struct SolverOptions {
   double time_limit_seconds = 0.0;
 };
 
-/// Options of the quality figures without ground truth (SurfaceQuality, docs/evaluation.md).
+/// Options of the quality figures without ground truth (SurfaceQuality, docs/user/evaluation.md).
 struct QualityOptions {
   /// A segment sample lies on the surface when within fit_factor x eps of it (> 0; 2, the width
   /// of the inlier slab plus the surface's own tolerance).

@@ -16,7 +16,7 @@
 namespace linesurf {
 inline namespace v1 {
 
-/// Where the inlier tolerance eps of a run came from (docs/plane_detection.md, eps auto).
+/// Where the inlier tolerance eps of a run came from (docs/design/plane_detection.md, eps auto).
 struct EpsilonEstimate {
   double epsilon = 0.0;  ///< scene units
   /// "given" (DetectionParameters::epsilon), "relative" (x scene diagonal), "planes" (residuals
@@ -45,7 +45,7 @@ struct ComponentQuality {
   bool floating = false;
 };
 
-/// Quality of a surface without ground truth (docs/evaluation.md): fit to the segments that
+/// Quality of a surface without ground truth (docs/user/evaluation.md): fit to the segments that
 /// support a plane, sight rays not blocked, components and floating fragments.
 struct SurfaceQuality {
   double epsilon = 0.0;                ///< eps the figures were measured with (scene units)
@@ -71,7 +71,7 @@ struct SurfaceQuality {
   std::vector<std::uint32_t> planes_off_surface;
 };
 
-/// Numbers of a reconstruction (docs/reconstruction.md explains each). The engine fills this
+/// Numbers of a reconstruction (docs/design/reconstruction.md explains each). The engine fills this
 /// very struct (pipeline::RunStats), so no number is lost on the way out.
 struct ReconstructStats {
   /// (stage, wall seconds) in run order: sanitize, detect, complex, evidence, solve, extract.
@@ -153,7 +153,7 @@ struct ReconstructStats {
 };
 
 /// What a mesh is as the boundary of solids: the classes of ISO 19107 / val3dity that GIS and
-/// BIM validators check (docs/formats.md, "Validity"). Connectivity is by vertex index: two
+/// BIM validators check (docs/user/formats.md, "Validity"). Connectivity is by vertex index: two
 /// vertices at one position are two vertices, counted in num_coincident_vertices. CheckMesh
 /// fills it; Reconstruct refuses a result that is not closed, 2-manifold at its edges, oriented,
 /// free of degenerate and non-planar faces and of self-intersection, and warns of the rest.

@@ -71,7 +71,7 @@ struct SceneData {
   /// Sorted by segment, then by position in the file.
   std::vector<Membership> memberships;
   /// Every segment has a membership list, possibly empty: ReadScene sets it for a reference
-  /// JSON with `planes` or `plane_index` keys (docs/formats.md). Kept for writing back, so that
+  /// JSON with `planes` or `plane_index` keys (docs/user/formats.md). Kept for writing back, so that
   /// WriteScene writes `plane_index` for every line (and `planes`) even when this scene has no
   /// membership and no plane, as the file had them. Planes imply it.
   bool has_memberships = false;

@@ -1,4 +1,4 @@
-# Must-show 1 of issue 13 (Python part): installs linesurf into a fresh prefix, runs
+# The installed Python module: installs linesurf into a fresh prefix, runs
 # docs/examples/host_python/reconstruct_house.py with the installed module only (PYTHONPATH =
 # the prefix's site-packages, run outside the build tree) and checks that its mesh of the
 # bundled house is byte for byte the CLI's.

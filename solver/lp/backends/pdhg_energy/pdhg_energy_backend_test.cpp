@@ -25,8 +25,8 @@ TEST(PdhgEnergy, BoundStaysBelowAWeightThatIsNotAFloat) {
 // The steps are preconditioned on the multipliers scaled to their boxes, so the iterates do not
 // depend on the units of the weights (scene units squared for areas, for one): every cost times
 // a power of two scales every iterate exactly, and the solve takes the same iterations to the
-// same x. Steps of 1 / entries for y (before session 14) make the multipliers of heavy terms
-// climb slower than those of light ones, and the two solves differ.
+// same x. Steps of 1 / entries for y (unweighted) would make the multipliers of heavy terms
+// climb slower than those of light ones, and the two solves would differ.
 TEST(PdhgEnergy, IteratesDoNotDependOnTheUnitsOfTheCosts) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 8;
