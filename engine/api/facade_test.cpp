@@ -111,12 +111,13 @@ TEST(FacadeOptions, SchemaBoundsAreTheEngines) {
           if (!std::isfinite(bound)) return;
           bounded = true;
           const bool open = at_min ? r.min_open : r.max_open;
-          const double step = std::is_same_v<T, std::optional<double>> ||
-                                      std::is_floating_point_v<T>
-                                  ? std::max(1e-9, std::abs(bound) * 1e-9)
-                                  : 1.0;
+          const double step =
+              std::is_same_v<T, std::optional<double>> || std::is_floating_point_v<T>
+                  ? std::max(1e-9, std::abs(bound) * 1e-9)
+                  : 1.0;
           const double toward = at_min ? step : -step;
-          const double value = past ? (open ? bound : bound - toward) : (open ? bound + toward : bound);
+          const double value =
+              past ? (open ? bound : bound - toward) : (open ? bound + toward : bound);
           if constexpr (std::is_same_v<T, std::optional<double>>) {
             field = value;
           } else {
@@ -127,9 +128,10 @@ TEST(FacadeOptions, SchemaBoundsAreTheEngines) {
       set(inside, false);
       if (!bounded) continue;
       set(outside, true);
-      if (path == "block_size" || path == "detection.block_size") inside.engine = ComplexEngine::kBlocks;
-      EXPECT_TRUE(inside.Validate().has_value()) << path << (at_min ? " min" : " max") << ": "
-                                                 << inside.Validate().error().ToString();
+      if (path == "block_size" || path == "detection.block_size")
+        inside.engine = ComplexEngine::kBlocks;
+      EXPECT_TRUE(inside.Validate().has_value())
+          << path << (at_min ? " min" : " max") << ": " << inside.Validate().error().ToString();
       const Status engine = api::ToEngineOptions(inside).Validate();
       EXPECT_TRUE(engine.has_value()) << path << (at_min ? " min" : " max") << ": "
                                       << (engine ? "" : engine.error().ToString());
@@ -660,8 +662,8 @@ TEST(FacadeReconstruct, CancelFromProgressOnAndalusianStopsWithinOnePlaneInserti
     ASSERT_TRUE(cancel.load()) << "the run never reached " << at << " of the complex";
     ASSERT_FALSE(r.has_value()) << "the run finished although cancelled at " << at;
     EXPECT_EQ(r.error().code, ErrorCode::kCancelled) << r.error().ToString();
-    EXPECT_TRUE(later_stages.empty()) << "stage " << later_stages.front()
-                                      << " ran after the cancel request at " << at;
+    EXPECT_TRUE(later_stages.empty())
+        << "stage " << later_stages.front() << " ran after the cancel request at " << at;
     EXPECT_LE(furthest_fraction - requested_fraction, one_plane)
         << "the complex went on from " << requested_fraction << " to " << furthest_fraction
         << " after the cancel request (one plane is " << one_plane << ")";

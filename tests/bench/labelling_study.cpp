@@ -16,8 +16,8 @@
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/reconstruct.h"
-#include "tests/bench/crop_scene.h"
 #include "solver/lp/lp_backend.h"
+#include "tests/bench/crop_scene.h"
 #include "tests/support/random_energy.h"
 #include "tools/gen/synthesize.h"
 
@@ -243,7 +243,7 @@ int Andalusian(const char* path, const char* box, double cbc_seconds) {
       const Outcome r = solve(Options(backend, improve, improve));
       std::printf("| %s%s | %s | %zu | %zu | %.6g | %zu | %.6g (%s) | %.1f |\n",
                   backend,
-                  improve ? "" : " (round 1: rounding, local search)",
+                  improve ? "" : " (rounding and local search only)",
                   r.method.c_str(),
                   r.cells,
                   r.lp_columns,

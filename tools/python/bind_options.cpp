@@ -108,25 +108,31 @@ void AddValidate(py::class_<T>& c) {
 }  // namespace
 
 void BindOptions(py::module_& m) {
-  OptionsClass<DetectionParameters>(
-      m, "DetectionParameters", "RANSAC plane detection (docs/plane_detection.md).", "detection.")
+  OptionsClass<DetectionParameters>(m,
+                                    "DetectionParameters",
+                                    "RANSAC plane detection (docs/design/plane_detection.md).",
+                                    "detection.")
       .Finish();
-  OptionsClass<EnergyWeights>(
-      m, "EnergyWeights", "Weights of the energy terms (docs/reconstruction.md).", "weights.")
+  OptionsClass<EnergyWeights>(m,
+                              "EnergyWeights",
+                              "Weights of the energy terms (docs/design/reconstruction.md).",
+                              "weights.")
       .Finish();
-  OptionsClass<SolverOptions>(m, "SolverOptions", "LP labelling (docs/solver.md).", "solver.")
+  OptionsClass<SolverOptions>(
+      m, "SolverOptions", "LP labelling (docs/design/solver.md).", "solver.")
       .Finish();
   OptionsClass<QualityOptions>(
-      m, "QualityOptions", "Figures without ground truth (docs/evaluation.md).", "quality.")
+      m, "QualityOptions", "Figures without ground truth (docs/user/evaluation.md).", "quality.")
       .Finish();
 
   using R = ReconstructOptions;
-  py::class_<R> reconstruct = OptionsClass<R>(m, "ReconstructOptions", "Options of reconstruct().", "")
-                                  .Group("detection", &R::detection, "DetectionParameters")
-                                  .Group("weights", &R::weights, "EnergyWeights")
-                                  .Group("solver", &R::solver, "SolverOptions")
-                                  .Group("quality", &R::quality, "QualityOptions")
-                                  .Finish();
+  py::class_<R> reconstruct =
+      OptionsClass<R>(m, "ReconstructOptions", "Options of reconstruct().", "")
+          .Group("detection", &R::detection, "DetectionParameters")
+          .Group("weights", &R::weights, "EnergyWeights")
+          .Group("solver", &R::solver, "SolverOptions")
+          .Group("quality", &R::quality, "QualityOptions")
+          .Finish();
   AddValidate(reconstruct);
 
   using O = DetectOptions;

@@ -168,7 +168,7 @@ template <internal::OptionsOf<SolverOptions> S, typename Visit>
 void VisitOptions(S& s, Visit&& visit) {
   using internal::kGroupSolver;
   visit(OptionSpec{"solver.backend", "solver", kGroupSolver,
-                   "Labelling backend (auto: by model size; docs/solver.md)", {}},
+                   "Labelling backend (auto: by model size; docs/design/solver.md)", {}},
         s.backend);
   visit(OptionSpec{"solver.time_limit_seconds", "time-limit", kGroupSolver,
                    "Solver wall-time limit, seconds (0 = none)", internal::kNonNegative},

@@ -2,8 +2,8 @@
 /// @file report.h
 /// @brief Run reports as JSON text, one layout for every front end: `linesurf reconstruct
 /// --report` and `detect --report` write these (adding the paths they read and wrote), Python's
-/// `result["report"]` is this JSON parsed, the C API returns it (docs/user/report.md).
-/// Each throws std::bad_alloc only.
+/// `result["report"]` is this JSON parsed, the C API returns it
+/// (docs/design/options_and_reports.md). Each throws std::bad_alloc only.
 
 #include "linesurf/export.h"
 #include "linesurf/options.h"
