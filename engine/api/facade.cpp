@@ -96,8 +96,10 @@ Expected<ReconstructResult> Reconstruct(const InputScene& scene,
     ThrowIfInvalid(options.Validate());
     const Scene engine_scene = ValueOrThrow(api::ToEngineScene(scene));
     const api::HostContext host(control, options.num_threads);
-    return api::ToPublicResult(ValueOrThrow(
-        pipeline::Reconstruct(engine_scene, api::ToEngineOptions(options), host.Context())));
+    return api::ToPublicResult(
+        ValueOrThrow(
+            pipeline::Reconstruct(engine_scene, api::ToEngineOptions(options), host.Context())),
+        options);
   });
 }
 
@@ -155,7 +157,8 @@ Expected<ReconstructResult> Reconstruction::Solve(const EnergyWeights& weights,
     engine_options.energy.weights = weights;
     const api::HostContext host(control, impl_->options.num_threads);
     return api::ToPublicResult(
-        ValueOrThrow(pipeline::SolvePrepared(impl_->prepared, engine_options, host.Context())));
+        ValueOrThrow(pipeline::SolvePrepared(impl_->prepared, engine_options, host.Context())),
+        impl_->options);
   });
 }
 

@@ -72,7 +72,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(SolverBackendName(o.solver.backend), e.solver.backend);
   EXPECT_EQ(o.solver.time_limit_seconds, e.solver.time_limit_seconds);
   EXPECT_EQ(o.scene_mode, e.scene_mode);
-  EXPECT_EQ(o.engine == ComplexEngine::kBlocks, e.engine == pipeline::Engine::kBlocks);
+  EXPECT_EQ(o.engine == ComplexEngine::kMonolithic, e.blocks.one_block);
   EXPECT_EQ(o.block_size, e.blocks.block_size);
   EXPECT_EQ(o.block_margin, e.blocks.support.margin_blocks);
   EXPECT_EQ(o.box_margin, e.box_margin);
@@ -166,11 +166,6 @@ TEST(FacadeOptions, ValidateNamesTheFirstOffendingField) {
        [](ReconstructOptions& o) {
          o.engine = ComplexEngine::kMonolithic;
          o.block_size = 3.0;
-       }},
-      {"merge_coplanar",
-       [](ReconstructOptions& o) {
-         o.engine = ComplexEngine::kMonolithic;
-         o.merge_coplanar = true;
        }},
       {"merge_coplanar",
        [](ReconstructOptions& o) {

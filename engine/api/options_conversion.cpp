@@ -2,11 +2,6 @@
 
 namespace linesurf::api {
 
-pipeline::Engine ToEngine(ComplexEngine engine) {
-  return engine == ComplexEngine::kBlocks ? pipeline::Engine::kBlocks
-                                          : pipeline::Engine::kMonolithic;
-}
-
 PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection, std::uint64_t seed) {
   PlaneDetectionOptions o;
   static_cast<DetectionParameters&>(o) = detection;
@@ -25,7 +20,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.solver.backend = SolverBackendName(options.solver.backend);
   o.solver.time_limit_seconds = options.solver.time_limit_seconds;
   o.scene_mode = options.scene_mode;
-  o.engine = ToEngine(options.engine);
+  o.blocks.one_block = options.engine == ComplexEngine::kMonolithic;
   o.blocks.block_size = options.block_size;
   o.blocks.support.margin_blocks = options.block_margin;
   o.box_margin = options.box_margin;

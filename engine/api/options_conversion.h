@@ -11,7 +11,6 @@
 
 namespace linesurf::api {
 
-[[nodiscard]] pipeline::Engine ToEngine(ComplexEngine engine);
 [[nodiscard]] PlaneDetectionOptions ToEngineOptions(const DetectionParameters& detection,
                                                     std::uint64_t seed);
 [[nodiscard]] pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options);

@@ -1,6 +1,7 @@
 #pragma once
 // The engine's results as the facade's plain result structs (linesurf/result.h).
 
+#include "linesurf/options.h"
 #include "linesurf/result.h"
 
 #include "engine/pipeline/detect_scene_planes.h"
@@ -8,7 +9,8 @@
 
 namespace linesurf::api {
 
-[[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result);
+[[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result,
+                                               const ReconstructOptions& options);
 
 /// The planes detected on the sanitised scene, in world coordinates; memberships index the
 /// input segments; the warnings end with the plane-cap warning for `max_planes` (if any).

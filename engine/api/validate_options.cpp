@@ -22,15 +22,14 @@ Status DetectOptions::Validate() const noexcept { return ValidateOptionValues(*t
 
 Status ReconstructOptions::Validate() const noexcept {
   if (Status s = ValidateOptionValues(*this); !s) return s;
-  const pipeline::Engine complex_engine = api::ToEngine(engine);
-  if (Status s = AsOptionError(pipeline::ValidateEngineBlockSize(
-          complex_engine,
+  if (Status s = AsOptionError(pipeline::ValidateOneBlockSize(
+          engine == ComplexEngine::kMonolithic,
           block_size,
           {.block_size = "block_size", .detection_block_size = "detection.block_size"}));
       !s) {
     return s;
   }
-  return AsOptionError(pipeline::ValidateMergeCoplanar(complex_engine, merge_coplanar, triangulate));
+  return AsOptionError(pipeline::ValidateMergeCoplanar(merge_coplanar, triangulate));
 }
 
 }  // namespace v1

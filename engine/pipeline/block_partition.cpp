@@ -73,8 +73,9 @@ Expected<BlockPartition> BuildBlockPartition(const Scene& scene,
                       "the block partition needs the planes' inliers (segment memberships)");
     BlockPartition out;
     BlockPartitionStats& stats = out.stats;
-    stats.automatic_size = options.block_size == 0.0;
-    stats.block_size = options.block_size;
+    stats.automatic_size = options.block_size == 0.0 && !options.one_block;
+    // One block: a side no extent of the box exceeds gives one block along every axis.
+    stats.block_size = options.one_block ? box.Extent().maxCoeff() : options.block_size;
     const std::vector<std::vector<SegmentId>> inliers = InliersOf(scene);
     if (stats.automatic_size) {
       stats.size_choice = ValueOrThrow(partition::ChooseBlockSize(

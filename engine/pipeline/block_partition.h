@@ -26,6 +26,9 @@ namespace linesurf::pipeline {
 struct BlockPartitionOptions {
   /// Side of the base blocks (scene units, >= 0); 0 = automatic (`size_rule`).
   double block_size = 0.0;
+  /// The whole box as one block: one exact arrangement of every plane with inliers, no seams
+  /// (the facade's ComplexEngine::kMonolithic). block_size must then be 0.
+  bool one_block = false;
   partition::BlockSizeRule size_rule;
   /// With the automatic size, a block that more planes than this reach is cut in two along each
   /// axis by a face through its whole slab (partition/voxel/crowded_blocks.h); 0 = never. A given

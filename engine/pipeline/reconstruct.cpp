@@ -9,11 +9,9 @@
 #include "engine/core/exception.h"
 #include "engine/detect/estimate_epsilon.h"
 #include "engine/pipeline/block_evidence.h"
-#include "engine/pipeline/centroid_blocks.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_block_surface.h"
-#include "engine/pipeline/extract_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
 #include "engine/pipeline/mesh_validity.h"
@@ -40,16 +38,11 @@ void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, 
 }
 
 /// The partition of the cells that the per-block solve ("blocks", picked by "auto" for large
-/// LPs) works on: the block engine's own blocks, or k-d blocks of a monolithic complex's cells.
-/// Empty when no backend that uses it can run, or ("auto") when the complex fits in one block.
+/// LPs) works on: the partition's own blocks. Empty when no backend that uses it can run.
 std::vector<std::uint32_t> SolveBlocks(const PreparedReconstruction& prepared,
                                        const solver::LabelingOptions& options) {
   if (options.backend != "auto" && options.backend != "blocks") return {};
-  if (prepared.blocks) return partition::BlockOfEachCell(prepared.blocks->complexes);
-  if (options.backend == "auto" && prepared.complex.NumCells() <= options.block_max_cells) {
-    return {};
-  }
-  return CentroidBlocks(prepared.complex, options.block_max_cells);
+  return partition::BlockOfEachCell(prepared.blocks.complexes);
 }
 
 /// The callbacks of `ctx` with the thread count of `options`: one context for every stage.
@@ -65,8 +58,8 @@ void ConfigureStageContext(const ReconstructOptions& options, const RunContext& 
 
 }  // namespace
 
-Status ValidateEngineBlockSize(Engine engine, double block_size, const BlockFieldNames& names) {
-  if (engine != Engine::kMonolithic || block_size == 0.0) return {};
+Status ValidateOneBlockSize(bool one_block, double block_size, const BlockFieldNames& names) {
+  if (!one_block || block_size == 0.0) return {};
   return Error{ErrorCode::kInvalidOptions,
                "reconstruct_options",
                std::string(names.block_size) +
@@ -74,20 +67,11 @@ Status ValidateEngineBlockSize(Engine engine, double block_size, const BlockFiel
                    names.detection_block_size + ")"};
 }
 
-Status ValidateMergeCoplanar(Engine engine, bool merge_coplanar, bool triangulate) {
-  if (!merge_coplanar) return {};
-  if (engine != Engine::kBlocks) {
-    return Error{ErrorCode::kInvalidOptions,
-                 "reconstruct_options",
-                 "merge_coplanar applies to the blocks engine only (the monolithic one has no "
-                 "block faces to merge across)"};
-  }
-  if (triangulate) {
-    return Error{ErrorCode::kInvalidOptions,
-                 "reconstruct_options",
-                 "merge_coplanar gives non-convex faces: not with triangulate"};
-  }
-  return {};
+Status ValidateMergeCoplanar(bool merge_coplanar, bool triangulate) {
+  if (!merge_coplanar || !triangulate) return {};
+  return Error{ErrorCode::kInvalidOptions,
+               "reconstruct_options",
+               "merge_coplanar gives non-convex faces: not with triangulate"};
 }
 
 Status ReconstructOptions::Validate() const {
@@ -100,8 +84,8 @@ Status ReconstructOptions::Validate() const {
   if (Status s = complex.Validate(); !s) return s;
   if (Status s = blocks.Validate(); !s) return s;
   if (Status s = detection_blocks.Validate(); !s) return s;
-  if (Status s = ValidateEngineBlockSize(engine, blocks.block_size); !s) return s;
-  if (Status s = ValidateMergeCoplanar(engine, merge_coplanar, triangulate); !s) return s;
+  if (Status s = ValidateOneBlockSize(blocks.one_block, blocks.block_size); !s) return s;
+  if (Status s = ValidateMergeCoplanar(merge_coplanar, triangulate); !s) return s;
   if (Status s = ValidateOptionValues(quality); !s) return s;
   if (!(box_margin > 0.0 && box_margin <= 10.0)) {
     return Error{ErrorCode::kInvalidOptions, "reconstruct_options",
@@ -145,14 +129,8 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     } else {
       PlaneDetectionOptions detect = options.planes;
       detect.seed = options.seed;
-      const bool blocks = options.engine == Engine::kBlocks;
-      DetectedScene detected =
-          ValueOrThrow(SanitizeAndDetectPlanes(input,
-                                               options.sanitize,
-                                               detect,
-                                               stage_ctx,
-                                               &timer,
-                                               blocks ? &options.detection_blocks : nullptr));
+      DetectedScene detected = ValueOrThrow(SanitizeAndDetectPlanes(
+          input, options.sanitize, detect, stage_ctx, &timer, &options.detection_blocks));
       stats.detection_block_size = detected.detection_block_size;
       scene = std::move(detected.scene);
       prepared.input_segment = std::move(detected.input_segment);
@@ -175,55 +153,38 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     }
 
     timer.Start("complex");
-    if (options.engine == Engine::kBlocks) {
-      BlockPartitionOptions partition_options = options.blocks;
-      partition_options.complex = options.complex;
-      prepared.blocks = ValueOrThrow(BuildBlockPartition(scene, box, partition_options, stage_ctx));
-      const partition::BlockComplexes& bc = prepared.blocks->complexes;
-      prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
-      stats.planes_in_complex = scene.planes.size() - prepared.blocks->stats.planes_without_inliers;
-      stats.engine = "blocks";
-      const BlockPartitionStats& ps = prepared.blocks->stats;
-      stats.block_size = ps.block_size;
-      stats.block_size_automatic = ps.automatic_size;
-      if (ps.automatic_size) {
-        stats.mean_segments_per_block = ps.size_choice.mean_segments_per_block;
-        stats.mean_planes_per_block = ps.size_choice.mean_planes_per_block;
-        stats.block_size_at_floor = ps.size_choice.limited_by_length;
-      }
-      stats.blocks = bc.blocks.size();
-      stats.seam_facets = bc.stats.seam_facets;
-      stats.crowded_split_faces = ps.crowded_split_faces;
-      stats.crowded_blocks = ps.crowded_blocks_left;
-      if (ps.crowded_blocks_left > 0) {
-        std::ostringstream w;
-        w << ps.crowded_blocks_left << " block(s) still reached by more than "
-          << options.blocks.crowded_planes_per_block
-          << " planes when the crowded-block cuts stopped (cut depth or block budget reached): "
-             "their complexes take most of the time and memory; a smaller --block-size splits "
-             "them";
-        prepared.warnings.push_back(w.str());
-      }
-      for (const partition::BlockComplex& b : bc.blocks) {
-        stats.cells += b.complex.NumCells();
-        stats.facets += b.complex.NumFacets();
-        stats.edges += b.complex.NumEdges();
-        stats.vertices += b.complex.NumVertices();
-      }
-    } else {
-      partition::CellComplexResult built = ValueOrThrow(
-          partition::BuildCellComplex(box, scene.planes.raw(), options.complex, stage_ctx));
-      prepared.warnings.insert(prepared.warnings.end(), built.warnings.begin(),
-                               built.warnings.end());
-      stats.planes_in_complex = built.stats.planes_used;
-      prepared.complex = std::move(built.complex);
-      const CellComplex& cx = prepared.complex;
-      stats.engine = "monolithic";
-      stats.blocks = 1;
-      stats.cells = cx.NumCells();
-      stats.facets = cx.NumFacets();
-      stats.edges = cx.NumEdges();
-      stats.vertices = cx.NumVertices();
+    BlockPartitionOptions partition_options = options.blocks;
+    partition_options.complex = options.complex;
+    prepared.blocks = ValueOrThrow(BuildBlockPartition(scene, box, partition_options, stage_ctx));
+    const partition::BlockComplexes& bc = prepared.blocks.complexes;
+    prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
+    stats.planes_in_complex = scene.planes.size() - prepared.blocks.stats.planes_without_inliers;
+    const BlockPartitionStats& ps = prepared.blocks.stats;
+    stats.block_size = ps.block_size;
+    stats.block_size_automatic = ps.automatic_size;
+    if (ps.automatic_size) {
+      stats.mean_segments_per_block = ps.size_choice.mean_segments_per_block;
+      stats.mean_planes_per_block = ps.size_choice.mean_planes_per_block;
+      stats.block_size_at_floor = ps.size_choice.limited_by_length;
+    }
+    stats.blocks = bc.blocks.size();
+    stats.seam_facets = bc.stats.seam_facets;
+    stats.crowded_split_faces = ps.crowded_split_faces;
+    stats.crowded_blocks = ps.crowded_blocks_left;
+    if (ps.crowded_blocks_left > 0) {
+      std::ostringstream w;
+      w << ps.crowded_blocks_left << " block(s) still reached by more than "
+        << options.blocks.crowded_planes_per_block
+        << " planes when the crowded-block cuts stopped (cut depth or block budget reached): "
+           "their complexes take most of the time and memory; a smaller --block-size splits "
+           "them";
+      prepared.warnings.push_back(w.str());
+    }
+    for (const partition::BlockComplex& b : bc.blocks) {
+      stats.cells += b.complex.NumCells();
+      stats.facets += b.complex.NumFacets();
+      stats.edges += b.complex.NumEdges();
+      stats.vertices += b.complex.NumVertices();
     }
     timer.Stop();
 
@@ -271,12 +232,8 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
 
     timer.Start("evidence");
     const BoundaryMode boundary = interior ? BoundaryMode::kInterior : BoundaryMode::kExterior;
-    EvidenceResult evidence =
-        prepared.blocks
-            ? ValueOrThrow(ComputeBlockEvidence(
-                  prepared.blocks->complexes, scene, options.energy, boundary, stage_ctx))
-            : ValueOrThrow(
-                  ComputeEvidence(prepared.complex, scene, options.energy, boundary, stage_ctx));
+    EvidenceResult evidence = ValueOrThrow(ComputeBlockEvidence(
+        prepared.blocks.complexes, scene, options.energy, boundary, stage_ctx));
     result.warnings.insert(result.warnings.end(), evidence.warnings.begin(),
                            evidence.warnings.end());
 
@@ -290,22 +247,15 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     extract.outside_full = interior;
     extract.triangulate = options.triangulate;
     extract.merge_coplanar = options.merge_coplanar;
-    if (prepared.blocks) {
-      BlockExtractResult surface = ValueOrThrow(
-          ExtractBlockSurface(prepared.blocks->complexes, labeling.labels, extract, stage_ctx));
-      const OpenSeamSurface open =
-          MeasureOpenSeamSurface(prepared.blocks->complexes, surface.mesh, surface.face_facet);
-      facts.open_seam_area = open.area;
-      facts.open_seam_faces = open.faces;
-      facts.mesh_area = open.total_area;
-      result.mesh = std::move(surface.mesh);
-      stats.split_vertices = surface.stats.split_vertices;
-    } else {
-      ExtractResult surface =
-          ValueOrThrow(ExtractSurface(prepared.complex, labeling.labels, extract));
-      result.mesh = std::move(surface.mesh);
-      stats.split_vertices = surface.stats.split_vertices;
-    }
+    BlockExtractResult surface = ValueOrThrow(
+        ExtractBlockSurface(prepared.blocks.complexes, labeling.labels, extract, stage_ctx));
+    const OpenSeamSurface open =
+        MeasureOpenSeamSurface(prepared.blocks.complexes, surface.mesh, surface.face_facet);
+    facts.open_seam_area = open.area;
+    facts.open_seam_faces = open.faces;
+    facts.mesh_area = open.total_area;
+    result.mesh = std::move(surface.mesh);
+    stats.split_vertices = surface.stats.split_vertices;
     IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 

@@ -1,10 +1,8 @@
 #pragma once
 /// @file reconstruct.h
-/// @brief The whole method on one box (DESIGN 2): sanitise -> planes (detected or given) -> box
-/// -> cell complex -> evidence -> LP labelling -> surface. See docs/design/reconstruction.md.
-///
-/// Every stage works on one box with no global state, so the block engine (DESIGN 3) can call
-/// the per-box stages (BuildCellComplex, ComputeEvidence, SolveLabeling, ExtractSurface) itself.
+/// @brief The whole method, one path for every scene: sanitise -> planes (detected or given) ->
+/// box -> block partition (one block or several) -> evidence -> LP labelling -> surface. See
+/// docs/design/reconstruction.md and docs/design/block_engine.md.
 
 #include <cstdint>
 #include <string>
@@ -33,30 +31,24 @@ namespace linesurf::pipeline {
 /// Boundary condition of the scene (see DecideSceneMode for kAuto): the public enum.
 using SceneMode = ::linesurf::SceneMode;
 
-/// How the cell complex is built: one exact arrangement of every plane in the scene box, or the
-/// block engine (docs/design/block_engine.md).
-enum class Engine {
-  kMonolithic,
-  kBlocks,
-};
-
-/// How an options struct spells the block fields, for the messages of ValidateEngineBlockSize
+/// How an options struct spells the block fields, for the messages of ValidateOneBlockSize
 /// (the engine's spelling by default; the facade passes its own).
 struct BlockFieldNames {
   const char* block_size = "blocks.block_size";            ///< the partition's block side
   const char* detection_block_size = "planes.block_size";  ///< per-block detection's cube side
 };
 
-/// The rule tying the partition's block side to the engine, for every options layer: a block
-/// side (0 = automatic) is given only to the blocks engine, since the monolithic one has no
-/// blocks; per-block detection has its own cube side, which the message points to.
-[[nodiscard]] Status ValidateEngineBlockSize(Engine engine,
-                                             double block_size,
-                                             const BlockFieldNames& names = {});
+/// The rule tying the partition's block side to the one-block partition, for every options
+/// layer: a block side (0 = automatic) is given only to a partition of several blocks, since one
+/// block is the whole box; per-block detection has its own cube side, which the message points
+/// to.
+[[nodiscard]] Status ValidateOneBlockSize(bool one_block,
+                                          double block_size,
+                                          const BlockFieldNames& names = {});
 
-/// The rule for merging coplanar faces, for every options layer: only the blocks engine has
-/// seams to merge across, and merged faces may be non-convex, so not with triangulate.
-[[nodiscard]] Status ValidateMergeCoplanar(Engine engine, bool merge_coplanar, bool triangulate);
+/// The rule for merging coplanar faces, for every options layer: merged faces may be
+/// non-convex, so not with triangulate.
+[[nodiscard]] Status ValidateMergeCoplanar(bool merge_coplanar, bool triangulate);
 
 struct ReconstructOptions {
   SanitizeOptions sanitize;
@@ -68,16 +60,13 @@ struct ReconstructOptions {
   EnergyOptions energy;
   solver::LabelingOptions solver;
   partition::CellComplexOptions complex;
-  /// The complex: blocks (default) or monolithic.
-  Engine engine = Engine::kBlocks;
-  /// Block size (0 = the size rule), size rule and support margin of the block engine's
-  /// partition; its `complex` is replaced by `complex` above. A block size with the monolithic
-  /// engine is an error (kInvalidOptions). Detection does not use it: its blocks are
-  /// planes.block_size, or with the blocks engine and planes.block_size 0 those that
-  /// `detection_blocks` picks (blocks as small as the partition's miss planes: on synth house at
+  /// Block size (0 = the size rule) or one block, size rule and support margin of the
+  /// partition; its `complex` is replaced by `complex` above. A block size with one block is an
+  /// error (kInvalidOptions). Detection does not use it: its blocks are planes.block_size, or
+  /// with planes.block_size 0 those that `detection_blocks` picks (blocks as small as the partition's miss planes: on synth house at
   /// 3 m blocks detection found 4 planes of 10 and the solid closed on block faces).
   BlockPartitionOptions blocks;
-  /// Blocks engine, planes.block_size 0: the detection cube side, by segments alone (the whole
+  /// planes.block_size 0: the detection cube side, by segments alone (the whole
   /// scene when it fits one block). 4,000 segments keep a block's planes under max_planes'
   /// default of 160 on the synthetic cities (about 8 planes per 270 segments).
   partition::BlockSizeRule detection_blocks = {
@@ -102,7 +91,7 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
-  /// Blocks engine: neighbouring faces of one plane with one outward side (split by block faces
+  /// Neighbouring faces of one plane with one outward side (split by block faces
   /// or by planes without surface there) become one polygon (ExtractOptions::merge_coplanar),
   /// which may be non-convex; not with triangulate.
   /// Default false: the blocks' facets.
@@ -134,16 +123,14 @@ struct ReconstructResult {
 };
 
 /// What a reconstruction computes before the evidence: the sanitised scene (local frame) with
-/// its planes, the cell complex of the box, and the resolved boundary condition. It does not
+/// its planes, the block partition of the box, and the resolved boundary condition. It does not
 /// depend on the energy weights, so one preparation serves several solves.
 struct PreparedReconstruction {
   Scene scene;
   /// Per segment of `scene`, its id in the input scene.
   IdVector<SegmentId, SegmentId> input_segment;
-  /// The cell complex of the box (monolithic engine; empty with the blocks engine).
-  CellComplex complex;
-  /// The block partition (blocks engine only).
-  std::optional<BlockPartition> blocks;
+  /// The block partition of the box and its complexes (one block or several).
+  BlockPartition blocks;
   /// What the result checks (JudgeResult) need from the preparation; `interior` is the
   /// resolved boundary condition.
   ResultFacts facts;

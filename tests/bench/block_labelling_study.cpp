@@ -24,7 +24,7 @@
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/block_evidence.h"
-#include "engine/pipeline/centroid_blocks.h"
+#include "tests/bench/centroid_blocks.h"
 #include "engine/pipeline/decide_scene_mode.h"
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/reconstruct.h"
@@ -302,7 +302,7 @@ int SceneStudy(const char* path,
   return 0;
 }
 
-// The energy `reconstruct --engine blocks` builds (given or detected planes, default options but
+// The energy `reconstruct` builds (given or detected planes, default options but
 // the block size and margin), solved once per variant "BACKEND[:KEY=VALUE,...]" of `variants`
 // (';'-separated), with the engine's blocks as the partition.
 int EngineStudy(const char* path,
@@ -314,7 +314,6 @@ int EngineStudy(const char* path,
   const auto start = std::chrono::steady_clock::now();
   const Scene input = Take(io::ReadScene(path, {}));
   pipeline::ReconstructOptions o;
-  o.engine = pipeline::Engine::kBlocks;
   o.blocks.block_size = block_size;
   o.blocks.support.margin_blocks = margin;
   o.use_given_planes = planes == "given";
@@ -326,7 +325,7 @@ int EngineStudy(const char* path,
   const double prepare_seconds = Seconds(start);
   const auto evidence_start = std::chrono::steady_clock::now();
   const pipeline::EvidenceResult evidence = Take(pipeline::ComputeBlockEvidence(
-      prepared.blocks->complexes,
+      prepared.blocks.complexes,
       prepared.scene,
       o.energy,
       prepared.facts.interior ? pipeline::BoundaryMode::kInterior
@@ -334,7 +333,7 @@ int EngineStudy(const char* path,
       ctx));
   const double evidence_seconds = Seconds(evidence_start);
   const std::vector<std::uint32_t> blocks =
-      partition::BlockOfEachCell(prepared.blocks->complexes);
+      partition::BlockOfEachCell(prepared.blocks.complexes);
   const std::string name = "engine " + planes;
   std::printf(
       "%s: %zu planes, block size %.3f, margin %g, %zu blocks, %zu cells, %zu pairs, %zu "
@@ -343,7 +342,7 @@ int EngineStudy(const char* path,
       prepared.scene.planes.size(),
       prepared.stats.block_size,
       margin,
-      prepared.blocks->complexes.blocks.size(),
+      prepared.blocks.complexes.blocks.size(),
       evidence.energy.NumCells(),
       evidence.energy.NumPairs(),
       evidence.energy.NumStructuralGroups(),

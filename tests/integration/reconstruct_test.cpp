@@ -201,8 +201,8 @@ TEST(Reconstruct, SameSeedGivesByteIdenticalMeshesForAnyThreadCount) {
   ExpectSameBytesForAnyThreadCount(s.scene, o, [](const pipeline::ReconstructResult&) {});
 }
 
-// A block engine of one block is the monolithic method, to the byte.
-TEST(Reconstruct, BlockEngineWithOneBlockGivesTheMonolithicMeshBytes) {
+// One block is a given block side that covers the box, to the byte.
+TEST(Reconstruct, OneBlockIsABlockSideCoveringTheBox) {
   const auto dir = testing::FreshTempDir();
   for (const char* family : {"house", "lshape"}) {
     SCOPED_TRACE(family);
@@ -210,9 +210,10 @@ TEST(Reconstruct, BlockEngineWithOneBlockGivesTheMonolithicMeshBytes) {
     pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
     o.use_given_planes = false;    // detection included
     o.planes.block_size = 1000.0;  // one detection block, one partition block
-    o.engine = pipeline::Engine::kMonolithic;
+    o.blocks.one_block = true;
     const pipeline::ReconstructResult mono = RunReconstruct(s.scene, o);
-    o.engine = pipeline::Engine::kBlocks;
+    EXPECT_EQ(mono.stats.blocks, 1u);
+    o.blocks.one_block = false;
     o.blocks.block_size = 1000.0;
     const pipeline::ReconstructResult blocks = RunReconstruct(s.scene, o);
     EXPECT_EQ(blocks.stats.blocks, 1u);
@@ -244,7 +245,6 @@ TEST(Reconstruct, BlockEngineWithManyBlocksIsClosedManifoldConformingAndAccurate
                    (given_planes ? " given planes" : " detected planes"));
       pipeline::ReconstructOptions o = Options(mode);
       o.use_given_planes = given_planes;
-      o.engine = pipeline::Engine::kBlocks;
       const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
       EXPECT_GT(r.stats.blocks, 1u);
       EXPECT_GT(r.stats.seam_facets, 0u);
@@ -337,8 +337,9 @@ TEST(Reconstruct, BlockEngineWithSmallBlocksKeepsTheDetectionAndNeverClosesSilen
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   o.use_given_planes = false;
+  o.blocks.one_block = true;
   const pipeline::ReconstructResult mono = RunReconstruct(s.scene, o);
-  o.engine = pipeline::Engine::kBlocks;
+  o.blocks.one_block = false;
   o.blocks.block_size = 3.0;
   const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
   EXPECT_GT(r.stats.blocks, 50u);
@@ -356,9 +357,9 @@ TEST(Reconstruct, BlockEngineWithSmallBlocksKeepsTheDetectionAndNeverClosesSilen
   EXPECT_TRUE(HasOpenSeamWarning(boxed));
 }
 
-TEST(Reconstruct, BlockSizeWithTheMonolithicEngineIsInvalidOptions) {
+TEST(Reconstruct, BlockSizeWithOneBlockIsInvalidOptions) {
   pipeline::ReconstructOptions o;
-  o.engine = pipeline::Engine::kMonolithic;
+  o.blocks.one_block = true;
   o.blocks.block_size = 3.0;
   const Status s = o.Validate();
   ASSERT_FALSE(s);
@@ -371,7 +372,6 @@ TEST(Reconstruct, BlockEngineGivesTheSameBytesForAnyThreadCount) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   o.use_given_planes = false;
-  o.engine = pipeline::Engine::kBlocks;
   ExpectSameBytesForAnyThreadCount(
       s.scene, o, [](const pipeline::ReconstructResult& r) { EXPECT_GT(r.stats.blocks, 1u); });
 }
@@ -383,7 +383,6 @@ TEST(Reconstruct, BlockEngineWithCrowdedBlocksCutGivesTheSameBytesForAnyThreadCo
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   o.use_given_planes = false;
-  o.engine = pipeline::Engine::kBlocks;
   o.blocks.crowded_planes_per_block = 4;
   ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
     EXPECT_GT(r.stats.crowded_split_faces, 0u);
@@ -396,7 +395,6 @@ TEST(Reconstruct, BlockEngineWithCrowdedBlocksCutGivesTheSameBytesForAnyThreadCo
 TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
-  o.engine = pipeline::Engine::kBlocks;
   const pipeline::ReconstructResult plain = RunReconstruct(s.scene, o);
   EXPECT_EQ(plain.stats.crowded_blocks, 0u);
   EXPECT_FALSE(HasCrowdedBlocksWarning(plain));
@@ -408,26 +406,21 @@ TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
   EXPECT_TRUE(HasCrowdedBlocksWarning(uncut));
 }
 
-// "auto" solves a large labelling per block, on the k-d blocks of the
-// monolithic complex and on the block engine's own blocks (here "large" is lowered to any size),
-// says so in the report, and gives the same bytes for any thread count.
+// "auto" solves a large labelling on the partition's own blocks (here "large" is lowered to
+// any size), says so in the report, and gives the same bytes for any thread count.
 TEST(Reconstruct, AutoSolvesLargeLabellingsPerBlockWithTheSameBytesForAnyThreadCount) {
   const synth::SyntheticScene s = Make("house");
-  for (const pipeline::Engine engine : {pipeline::Engine::kMonolithic, pipeline::Engine::kBlocks}) {
-    SCOPED_TRACE(engine == pipeline::Engine::kBlocks ? "blocks engine" : "monolithic");
-    pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
-    o.engine = engine;
-    o.solver.auto_blocks_min_columns = 0;
-    o.solver.block_max_cells = 10;
-    ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
-      EXPECT_EQ(r.stats.solver_backend, "blocks");
-      EXPECT_NE(r.stats.labeling_method.find("block"), std::string::npos)
-          << r.stats.labeling_method;
-      EXPECT_NE(r.stats.lower_bound_source, "none");
-      EXPECT_LE(r.stats.lower_bound, r.stats.objective + 1e-9);
-      ExpectGood(s, r);
-    });
-  }
+  pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
+  o.solver.auto_blocks_min_columns = 0;
+  ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
+    EXPECT_GT(r.stats.blocks, 1u);
+    EXPECT_EQ(r.stats.solver_backend, "blocks");
+    EXPECT_NE(r.stats.labeling_method.find("block"), std::string::npos)
+        << r.stats.labeling_method;
+    EXPECT_NE(r.stats.lower_bound_source, "none");
+    EXPECT_LE(r.stats.lower_bound, r.stats.objective + 1e-9);
+    ExpectGood(s, r);
+  });
 }
 
 TEST(Reconstruct, MissingGivenPlanesIsInvalidInput) {
@@ -456,11 +449,11 @@ TEST(Reconstruct, ReportsQualityWithoutGroundTruth) {
 }
 
 TEST(Reconstruct, FloatingFragmentsAreRemovedByDefaultAndKeptOnRequest) {
-  // city-4 seed 1 with detected planes on the monolithic engine: the labelling leaves a piece
-  // behind a lone line (measured: one fragment of volume 2.7 holding one supported segment).
+  // city-4 seed 1 with detected planes in one block: the labelling leaves a piece behind a lone
+  // line.
   const synth::SyntheticScene s = Make("city", 4);
   pipeline::ReconstructOptions o;
-  o.engine = pipeline::Engine::kMonolithic;
+  o.blocks.one_block = true;
   const pipeline::ReconstructResult removed = RunReconstruct(s.scene, o);
   o.remove_floating_fragments = false;
   const pipeline::ReconstructResult kept = RunReconstruct(s.scene, o);

@@ -241,7 +241,7 @@ void VisitOptions(O& o, Visit&& visit) {
         o.structural_as_textural);
   VisitOptions(o.solver, visit);
   visit(OptionSpec{"engine", "engine", kGroupComplex,
-                   "Cell complex: one arrangement of the scene box, or per-block arrangements", {}},
+                   "Cell complex: the scene box as one block (one arrangement), or blocks", {}},
         o.engine);
   visit(OptionSpec{"block_size", "block-size", kGroupComplex,
                    "Blocks engine: side of the base blocks, scene units (0 = automatic)",
@@ -268,8 +268,8 @@ void VisitOptions(O& o, Visit&& visit) {
                    "Triangles instead of convex polygons", {}},
         o.triangulate);
   visit(OptionSpec{"merge_coplanar", "merge-coplanar", kGroupOutput,
-                   "Blocks engine: neighbouring faces of one plane with one outward side become "
-                   "one polygon (may be non-convex; not with triangulate)", {}},
+                   "Neighbouring faces of one plane with one outward side become one polygon "
+                   "(may be non-convex; not with triangulate)", {}},
         o.merge_coplanar);
   VisitRunOptions(o, visit);
 }

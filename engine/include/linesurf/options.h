@@ -108,10 +108,11 @@ enum class SolverBackend {
   kPdhgEnergy,  ///< first-order primal-dual on the energy's saddle form: no slack columns
 };
 
-/// How the cell complex is built (docs/design/block_engine.md).
+/// How the block engine partitions the scene box (docs/design/block_engine.md): one engine,
+/// one or several blocks.
 enum class ComplexEngine {
-  kMonolithic,  ///< one arrangement of the scene box
-  kBlocks,      ///< per-block arrangements of ReconstructOptions::block_size (0: automatic)
+  kMonolithic,  ///< the whole box as one block: one arrangement of every plane with inliers
+  kBlocks,      ///< blocks of side ReconstructOptions::block_size (0: automatic)
 };
 
 /// Weights of the energy terms (docs/design/reconstruction.md). These, and only these, can change in
@@ -202,8 +203,8 @@ struct ReconstructOptions {
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
-  /// Blocks engine: neighbouring faces of one plane with one outward side (split by block faces
-  /// or by planes without surface there) become one polygon, which may be non-convex (not with
+  /// Neighbouring faces of one plane with one outward side (split by block faces or by planes
+  /// without surface there) become one polygon, which may be non-convex (not with
   /// triangulate). Default false: convex faces.
   bool merge_coplanar = false;
   /// Worker threads: 0 = automatic, 1 = serial ([0, kMaxThreads]). Results do not depend on it.

@@ -1,4 +1,4 @@
-#include "engine/pipeline/centroid_blocks.h"
+#include "tests/bench/centroid_blocks.h"
 
 #include "engine/core/exception.h"
 #include "partition/arrangement/cell_geometry.h"

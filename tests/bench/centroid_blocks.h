@@ -1,10 +1,10 @@
 #pragma once
-// A partition of the cells of one complex into blocks of nearby cells, for the per-block solve
-// of the labelling (solver "blocks", block_labeling.h) on a monolithic complex: the cells'
+// A partition of the cells of one complex into blocks of nearby cells, for the study of the
+// per-block solve (solver "blocks", block_labeling.h) on one global complex
+// (block_labelling_study.cpp; the pipeline solves on its partition's own blocks): the cells'
 // centroids are split recursively at the median of the longest side of their bounding box (a
 // k-d tree), until no block holds more than `max_cells` cells. Blocks then hold about the same
-// number of cells wherever the planes crowd, unlike a uniform grid of the box. The block
-// engine's complexes carry their own blocks; this is for one global complex.
+// number of cells wherever the planes crowd, unlike a uniform grid of the box.
 
 #include "engine/core/cell_complex.h"
 
