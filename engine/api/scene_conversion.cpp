@@ -32,8 +32,7 @@ Expected<Scene> ToEngineScene(const InputScene& input,
     scene.viewpoints.reserve(num_viewpoints);
     for (const Vector3& v : input.viewpoints) scene.viewpoints.push_back(ToVec3(v));
 
-    // Observations grouped by segment with a stable counting sort (relative order kept).
-    std::vector<std::uint32_t> row_start(num_segments + 1, 0);
+    // Observations grouped by segment, in input order within a segment.
     for (std::size_t k = 0; k < input.observations.size(); ++k) {
       const Observation& o = input.observations[k];
       LINESURF_THROW_IF(o.segment >= num_segments,
@@ -47,26 +46,24 @@ Expected<Scene> ToEngineScene(const InputScene& input,
                         "observations[" << k << "].viewpoint = " << o.viewpoint
                                         << " is out of range (" << num_viewpoints
                                         << " viewpoints)");
-      ++row_start[o.segment + 1];
     }
-    for (std::size_t s = 0; s < num_segments; ++s) row_start[s + 1] += row_start[s];
-    std::vector<std::size_t> order(input.observations.size());
-    std::vector<std::uint32_t> fill(row_start.begin(), row_start.end() - 1);
-    for (std::size_t k = 0; k < input.observations.size(); ++k) {
-      order[fill[input.observations[k].segment]++] = k;
-    }
-    scene.observations.Reserve(num_segments, order.size());
+    const auto by_segment = Csr<SegmentId, std::uint32_t>::FromPairs(
+        num_segments,
+        input.observations.size(),
+        [&](std::size_t k) { return SegmentId(input.observations[k].segment); },
+        [](std::size_t k) { return static_cast<std::uint32_t>(k); });
+    scene.observations.Reserve(num_segments, by_segment.NumItems());
     std::vector<ViewpointId> row;
     for (std::size_t s = 0; s < num_segments; ++s) {
       row.clear();
-      for (std::uint32_t i = row_start[s]; i < row_start[s + 1]; ++i) {
-        row.emplace_back(static_cast<std::size_t>(input.observations[order[i]].viewpoint));
+      for (const std::uint32_t k : by_segment[SegmentId(s)]) {
+        row.emplace_back(static_cast<std::size_t>(input.observations[k].viewpoint));
       }
       scene.observations.AddRow(row);
     }
     if (!residuals.empty()) {
-      scene.residuals.reserve(order.size());
-      for (const std::size_t k : order) scene.residuals.push_back(residuals[k]);
+      scene.residuals.reserve(by_segment.NumItems());
+      for (const std::uint32_t k : by_segment.items()) scene.residuals.push_back(residuals[k]);
     }
 
     scene.planes.reserve(num_planes);

@@ -42,25 +42,19 @@ void AddComplexRegularisation(const CellComplex& cx,
     }
   }
   if (options.weights.corner > 0.0) {
-    // Vertex -> incident edges (counting sort, edges ascending per vertex).
-    std::vector<std::uint32_t> offsets(cx.NumVertices() + 1, 0);
-    for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-      for (const VertexId v : cx.edge_vertices[EdgeId(e)]) ++offsets[v.index() + 1];
-    }
-    for (std::size_t v = 0; v < cx.NumVertices(); ++v) offsets[v + 1] += offsets[v];
-    std::vector<std::uint32_t> incident(offsets.back());
-    std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (std::size_t e = 0; e < cx.NumEdges(); ++e) {
-      for (const VertexId v : cx.edge_vertices[EdgeId(e)]) {
-        incident[fill[v.index()]++] = static_cast<std::uint32_t>(e);
-      }
-    }
+    // Vertex -> incident edges, edges ascending per vertex (each edge has its two ends).
+    const auto incident = Csr<VertexId, EdgeId>::FromPairs(
+        cx.NumVertices(),
+        2 * cx.NumEdges(),
+        [&](std::size_t k) { return cx.edge_vertices[EdgeId(k / 2)][k % 2]; },
+        [](std::size_t k) { return EdgeId(k / 2); });
     for (std::size_t v = 0; v < cx.NumVertices(); ++v) {
-      bool interior = offsets[v + 1] > offsets[v];
+      const std::span<const EdgeId> edges = incident[VertexId(v)];
+      bool interior = !edges.empty();
       cells.clear();
-      for (std::uint32_t i = offsets[v]; i < offsets[v + 1] && interior; ++i) {
-        interior = edge_interior[incident[i]] != 0;
-        const auto around = cx.edge_cells[EdgeId(static_cast<std::size_t>(incident[i]))];
+      for (std::size_t i = 0; i < edges.size() && interior; ++i) {
+        interior = edge_interior[edges[i].index()] != 0;
+        const auto around = cx.edge_cells[edges[i]];
         cells.insert(cells.end(), around.begin(), around.end());
       }
       if (!interior) continue;

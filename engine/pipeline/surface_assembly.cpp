@@ -1,5 +1,6 @@
 #include "engine/pipeline/surface_assembly.h"
 
+#include "engine/core/csr.h"
 #include "engine/core/exception.h"
 
 #include <Eigen/Geometry>
@@ -26,22 +27,16 @@ std::vector<std::uint32_t> AssignCornerVertices(std::size_t num_vertices,
       face_of_corner[k] = static_cast<std::uint32_t>(f);
     }
   }
-  // Corners grouped by vertex (counting sort keeps corner order within a vertex).
-  std::vector<std::uint32_t> vertex_offsets(num_vertices + 1, 0);
-  for (const std::uint32_t v : s.corner_vertex) {
-    LINESURF_ASSERT(v < num_vertices);
-    ++vertex_offsets[v + 1];
-  }
-  for (std::size_t v = 0; v < num_vertices; ++v) vertex_offsets[v + 1] += vertex_offsets[v];
-  std::vector<std::uint32_t> by_vertex(num_corners);
-  {
-    std::vector<std::uint32_t> fill(vertex_offsets.begin(), vertex_offsets.end() - 1);
-    for (std::uint32_t c = 0; c < num_corners; ++c) by_vertex[fill[s.corner_vertex[c]]++] = c;
-  }
+  // Corners grouped by vertex, in corner order within a vertex.
+  for (const std::uint32_t v : s.corner_vertex) LINESURF_ASSERT(v < num_vertices);
+  const auto by_vertex = Csr<std::uint32_t, std::uint32_t>::FromPairs(
+      num_vertices,
+      num_corners,
+      [&](std::size_t c) { return s.corner_vertex[c]; },
+      [](std::size_t c) { return static_cast<std::uint32_t>(c); });
   std::vector<std::uint32_t> corner_out(num_corners, kNoIndex);
-  for (std::size_t v = 0; v < num_vertices; ++v) {
-    for (std::uint32_t idx = vertex_offsets[v]; idx < vertex_offsets[v + 1]; ++idx) {
-      const std::uint32_t start = by_vertex[idx];
+  for (std::uint32_t v = 0; v < num_vertices; ++v) {
+    for (const std::uint32_t start : by_vertex[v]) {
       if (corner_out[start] != kNoIndex) continue;
       // Walk: leave the corner through its outgoing edge, enter the partner face, whose edge is
       // incoming to this vertex; its next corner is this vertex again.

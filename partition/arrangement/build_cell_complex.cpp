@@ -425,15 +425,13 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     cx.edge_vertices.push_back({VertexId(static_cast<std::uint32_t>(key >> 32)),
                                 VertexId(static_cast<std::uint32_t>(key & 0xffffffffu))});
   }
-  // facet -> edges, and edge -> incident facets (unordered, by counting).
-  std::vector<std::uint32_t> incident_count(ne + 1, 0);
+  // facet -> edges, and edge -> incident facets (in facet order).
   std::vector<std::uint32_t> facet_edge_ids(facet_edge_keys.size());
   for (std::size_t i = 0; i < facet_edge_keys.size(); ++i) {
     const auto e = static_cast<std::uint32_t>(
         std::lower_bound(edge_keys.begin(), edge_keys.end(), facet_edge_keys[i]) -
         edge_keys.begin());
     facet_edge_ids[i] = e;
-    ++incident_count[e + 1];
   }
   {
     std::size_t k = 0;
@@ -444,23 +442,14 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
       cx.facet_edges.AddRow(row);
     }
   }
-  for (std::size_t e = 0; e < ne; ++e) incident_count[e + 1] += incident_count[e];
-  std::vector<std::uint32_t> incident(incident_count[ne]);
-  {
-    std::vector<std::uint32_t> fill(incident_count.begin(), incident_count.end() - 1);
-    std::size_t k = 0;
-    for (std::size_t f = 0; f < nfac; ++f) {
-      for (std::size_t i = 0; i < facet_cycle_[f].size(); ++i) {
-        incident[fill[facet_edge_ids[k++]]++] = static_cast<std::uint32_t>(f);
-      }
-    }
-  }
+  const Csr<EdgeId, FacetId> incident = cx.facet_edges.Transpose(ne);
   // Cyclic order around each edge by walking cell -> other facet containing the edge.
   std::vector<FacetId> ordered_facets;
   std::vector<CellId> ordered_cells;
+  std::vector<std::uint32_t> fs;  // the facets of the edge, as the plain indices used below
   for (std::size_t e = 0; e < ne; ++e) {
-    const std::span<const std::uint32_t> fs(incident.data() + incident_count[e],
-                                            incident.data() + incident_count[e + 1]);
+    fs.clear();
+    for (const FacetId f : incident[EdgeId(e)]) fs.push_back(f.value());
     ordered_facets.clear();
     ordered_cells.clear();
     std::uint32_t start = kNone;
