@@ -270,7 +270,7 @@ class BlockSolver {
     CheckTime();
   }
 
-  // The free cells within `block_halo` term hops of a block's cells, outside the block.
+  // The free cells within `blocks.halo` term hops of a block's cells, outside the block.
   [[nodiscard]] std::vector<CellId> Halo(std::uint32_t b) const {
     const auto cells = blocks_.cells[BlockId(b)];
     std::vector<CellId> ring(cells.begin(), cells.end()), halo;
