@@ -7,8 +7,9 @@
 #include "solver/lp/backends/pdhg/pdhg_backend.h"
 #include "solver/lp/backends/pdhg_energy/pdhg_energy_backend.h"
 #include "solver/lp/band_fixing.h"
+#include "solver/lp/dual_bound.h"
 
-#include <algorithm>
+#include <initializer_list>
 #include <vector>
 
 namespace linesurf::solver {
@@ -16,18 +17,70 @@ namespace {
 
 bool InEveryBuild() noexcept { return true; }
 
+constexpr BackendAvailability kEveryBuild{.in_this_build = InEveryBuild, .missing_hint = ""};
+constexpr BackendAvailability kWithCbc{.in_this_build = CbcAvailable,
+                                       .missing_hint = "install coinor-libcbc-dev and reconfigure"};
+
+enum class Capability {
+  kExact,
+  kIntegral,
+  kPairwiseOnly,
+  kTakesPartition,
+  kNeedsPartition,
+  kPerBlock
+};
+
+// The capabilities listed, the others false.
+constexpr BackendCapabilities Can(std::initializer_list<Capability> list) {
+  BackendCapabilities can{.exact = false,
+                          .integral = false,
+                          .pairwise_only = false,
+                          .takes_partition = false,
+                          .needs_partition = false,
+                          .per_block = false};
+  for (const Capability c : list) {
+    switch (c) {
+      case Capability::kExact:
+        can.exact = true;
+        break;
+      case Capability::kIntegral:
+        can.integral = true;
+        break;
+      case Capability::kPairwiseOnly:
+        can.pairwise_only = true;
+        break;
+      case Capability::kTakesPartition:
+        can.takes_partition = true;
+        break;
+      case Capability::kNeedsPartition:
+        can.needs_partition = true;
+        break;
+      case Capability::kPerBlock:
+        can.per_block = true;
+        break;
+    }
+  }
+  return can;
+}
+
 LpSolution RunClp(const BackendInput& input,
                   const LabelingOptions& options,
                   const RunContext& ctx) {
-  return SolveLpWithClp(
-      input.lp, ClpAlgorithm::kDualSimplex, options.clp, options.time_limit_seconds, ctx);
+  return SolveLpWithClp(BuildLpModel(input.reduced),
+                        ClpAlgorithm::kDualSimplex,
+                        options.clp,
+                        options.time_limit_seconds,
+                        ctx);
 }
 
 LpSolution RunClpBarrier(const BackendInput& input,
                          const LabelingOptions& options,
                          const RunContext& ctx) {
-  return SolveLpWithClp(
-      input.lp, ClpAlgorithm::kBarrier, options.clp, options.time_limit_seconds, ctx);
+  return SolveLpWithClp(BuildLpModel(input.reduced),
+                        ClpAlgorithm::kBarrier,
+                        options.clp,
+                        options.time_limit_seconds,
+                        ctx);
 }
 
 LpSolution RunMaxflow(const BackendInput& input,
@@ -39,7 +92,11 @@ LpSolution RunMaxflow(const BackendInput& input,
 LpSolution RunPdhg(const BackendInput& input,
                    const LabelingOptions& options,
                    const RunContext& ctx) {
-  return SolveLpWithPdhg(input.lp, options.pdhg, options.time_limit_seconds, ctx);
+  const LpModel lp = BuildLpModel(input.reduced);
+  LpSolution solution = SolveLpWithPdhg(lp, options.pdhg, options.time_limit_seconds, ctx);
+  // Its objective is a primal value; its dual point proves the bound (dual_bound.h).
+  if (!solution.row_duals.empty()) solution.lower_bound = LagrangianBound(lp, solution.row_duals);
+  return solution;
 }
 
 LpSolution RunPdhgEnergy(const BackendInput& input,
@@ -59,140 +116,52 @@ LpSolution RunCbc(const BackendInput& input,
   for (std::size_t j = 0; j < incumbent.size(); ++j) {
     incumbent[j] = pairwise[input.reduced.cell_of_column[j].index()];
   }
-  return SolveIlpWithCbc(input.lp, input.reduced.NumFree(), incumbent, limits, ctx);
+  return SolveIlpWithCbc(
+      BuildLpModel(input.reduced), input.reduced.NumFree(), incumbent, limits, ctx);
 }
 
-// In the order of their names in messages.
-constexpr LabelingBackend kBackends[] = {
-    {.backend = SolverBackend::kAuto,
-     .capabilities = {.exact = false,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = true,
-                      .needs_partition = false,
-                      .per_block = true},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kRule,
-     .solves_lp_model = false,
-     .solve = nullptr,
-     .bound = BoundProof::kNone},
-    {.backend = SolverBackend::kClp,
-     .capabilities = {.exact = true,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = true},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = true,
-     .solve = RunClp,
-     .bound = BoundProof::kLpOptimum},
-    {.backend = SolverBackend::kClpBarrier,
-     .capabilities = {.exact = true,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = false},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = true,
-     .solve = RunClpBarrier,
-     .bound = BoundProof::kLpOptimum},
-    {.backend = SolverBackend::kMaxflow,
-     .capabilities = {.exact = true,
-                      .integral = true,
-                      .pairwise_only = true,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = false},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = false,
-     .solve = RunMaxflow,
-     .bound = BoundProof::kIntegerOptimum},
-    {.backend = SolverBackend::kPdhg,
-     .capabilities = {.exact = false,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = true},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = true,
-     .solve = RunPdhg,
-     .bound = BoundProof::kLpDual},
-    {.backend = SolverBackend::kPdhgEnergy,
-     .capabilities = {.exact = false,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = true},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = false,
-     .solve = RunPdhgEnergy,
-     .bound = BoundProof::kEnergyDual},
-    {.backend = SolverBackend::kBand,
-     .capabilities = {.exact = false,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = false},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kBand,
-     .solves_lp_model = false,
-     .solve = nullptr,
-     .bound = BoundProof::kPairwiseOptimum},
-    {.backend = SolverBackend::kBlocks,
-     .capabilities = {.exact = false,
-                      .integral = false,
-                      .pairwise_only = false,
-                      .takes_partition = true,
-                      .needs_partition = true,
-                      .per_block = false},
-     .available = InEveryBuild,
-     .missing_hint = "",
-     .strategy = BackendStrategy::kBlocks,
-     .solves_lp_model = false,
-     .solve = nullptr,
-     .bound = BoundProof::kBlockBounds},
-    {.backend = SolverBackend::kCbc,
-     .capabilities = {.exact = true,
-                      .integral = true,
-                      .pairwise_only = false,
-                      .takes_partition = false,
-                      .needs_partition = false,
-                      .per_block = true},
-     .available = CbcAvailable,
-     .missing_hint = "install coinor-libcbc-dev and reconfigure",
-     .strategy = BackendStrategy::kSolve,
-     .solves_lp_model = true,
-     .solve = RunCbc,
-     .bound = BoundProof::kBranchAndBound},
-};
+// The table's own names: its rows read without the enums' names.
+namespace table {
 
+using enum BackendStrategy;
+using enum BoundProof;
+using enum Capability;
+
+// In the order of their names in messages. Per row: backend, capabilities, availability; how it
+// runs, how it proves its lower bound.
+// clang-format off
+constexpr LabelingBackend kBackends[] = {
+    {SolverBackend::kAuto, Can({kTakesPartition, kPerBlock}), kEveryBuild,
+     kRule, nullptr, kNone},
+    {SolverBackend::kClp, Can({kExact, kPerBlock}), kEveryBuild,
+     kSolve, RunClp, kLpOptimum},
+    {SolverBackend::kClpBarrier, Can({kExact}), kEveryBuild,
+     kSolve, RunClpBarrier, kLpOptimum},
+    {SolverBackend::kMaxflow, Can({kExact, kIntegral, kPairwiseOnly}), kEveryBuild,
+     kSolve, RunMaxflow, kIntegerOptimum},
+    {SolverBackend::kPdhg, Can({kPerBlock}), kEveryBuild,
+     kSolve, RunPdhg, kLpDual},
+    {SolverBackend::kPdhgEnergy, Can({kPerBlock}), kEveryBuild,
+     kSolve, RunPdhgEnergy, kEnergyDual},
+    {SolverBackend::kBand, Can({}), kEveryBuild,
+     kBand, nullptr, kPairwiseOptimum},
+    {SolverBackend::kBlocks, Can({kTakesPartition, kNeedsPartition}), kEveryBuild,
+     kBlocks, nullptr, kBlockBounds},
+    {SolverBackend::kCbc, Can({kExact, kIntegral, kPerBlock}), kWithCbc,
+     kSolve, RunCbc, kBranchAndBound},
+};
+// clang-format on
+
+}  // namespace table
 }  // namespace
 
-std::span<const LabelingBackend> LabelingBackends() noexcept { return kBackends; }
+std::span<const LabelingBackend> LabelingBackends() noexcept { return table::kBackends; }
 
 const LabelingBackend* FindBackend(SolverBackend backend) noexcept {
-  const auto* it =
-      std::find_if(std::begin(kBackends), std::end(kBackends), [backend](const LabelingBackend& b) {
-        return b.backend == backend;
-      });
-  return it == std::end(kBackends) ? nullptr : it;
+  for (const LabelingBackend& b : LabelingBackends()) {
+    if (b.backend == backend) return &b;
+  }
+  return nullptr;
 }
 
 const LabelingBackend& LookupBackend(SolverBackend backend) {
@@ -206,7 +175,7 @@ const LabelingBackend& LookupBackend(SolverBackend backend) {
 
 std::string BackendNames(bool (*keep)(const LabelingBackend&)) {
   std::string names;
-  for (const LabelingBackend& b : kBackends) {
+  for (const LabelingBackend& b : LabelingBackends()) {
     if (!keep(b)) continue;
     if (!names.empty()) names += ", ";
     names += SolverBackendName(b.backend);

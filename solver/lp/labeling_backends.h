@@ -11,7 +11,6 @@
 #include "solver/energy/build_lp.h"
 #include "solver/energy/energy_input.h"
 #include "solver/lp/labeling_options.h"
-#include "solver/lp/lp_model.h"
 #include "solver/lp/lp_solution.h"
 
 #include <cstddef>
@@ -62,29 +61,32 @@ enum class BoundProof {
                      ///< (block_labeling.h)
 };
 
-/// What a kSolve backend solves: the energy, reduced (free cells only), and its LP model.
+/// What a kSolve backend solves: the energy and the same reduced to its free cells (a backend
+/// that solves the LP model builds it from `reduced`, build_lp.h).
 struct BackendInput {
   const EnergyInput& energy;
   const ReducedEnergy& reduced;
-  /// BuildLpModel(reduced) for a backend that solves the LP model, else empty.
-  const LpModel& lp;
 };
 
-/// Runs a kSolve backend with its own options struct of `options` and the time limit.
+/// Runs a kSolve backend with its own options struct of `options` and the time limit. The
+/// solution has one value per free cell first (LpSolution::columns), then any slacks.
 using SolveFunction = LpSolution (*)(const BackendInput& input,
                                      const LabelingOptions& options,
                                      const RunContext& ctx);
 
+/// Whether this build has a backend.
+struct BackendAvailability {
+  bool (*in_this_build)() noexcept = nullptr;
+  /// What brings it into a build that lacks it ("" for a backend every build has).
+  const char* missing_hint = "";
+};
+
 struct LabelingBackend {
   SolverBackend backend = SolverBackend::kAuto;
   BackendCapabilities capabilities;
-  /// Whether this build has it (cbc is optional at build time).
-  bool (*available)() noexcept = nullptr;
-  /// What brings it into a build that lacks it ("" for a backend every build has).
-  const char* missing_hint = "";
+  /// cbc is optional at build time; every other backend is in every build.
+  BackendAvailability availability;
   BackendStrategy strategy = BackendStrategy::kSolve;
-  /// kSolve: solves BackendInput::lp (else the reduced energy; the LP model is not built).
-  bool solves_lp_model = false;
   /// kSolve: runs it; null for the other strategies.
   SolveFunction solve = nullptr;
   BoundProof bound = BoundProof::kNone;

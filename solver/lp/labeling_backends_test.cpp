@@ -26,14 +26,13 @@ std::vector<SolverBackend> EveryEnumerator() {
 
 // A small energy with structural and parity terms, small enough for the brute-force minimum.
 EnergyInput MixedEnergy() {
-  testing::RandomEnergySpec spec;
-  spec.num_cells = 14;
-  spec.num_pairs = 20;
-  spec.num_structural = 5;
-  spec.num_parity = 6;
-  spec.fixed_fraction = 0.15;
-  spec.seed = 7;
-  return testing::RandomEnergy(spec);
+  return testing::RandomEnergy({.num_cells = 14,
+                                .num_pairs = 20,
+                                .num_structural = 5,
+                                .num_parity = 6,
+                                .fixed_fraction = 0.15,
+                                .parity_constants = false,
+                                .seed = 7});
 }
 
 Expected<LabelingResult> SolveBy(const EnergyInput& e, SolverBackend backend) {
@@ -61,14 +60,14 @@ TEST(LabelingBackends, CapabilitiesAndStrategiesAgree) {
     EXPECT_TRUE(!can.integral || can.exact);  // an integral solve proves its optimum
     EXPECT_TRUE(!can.needs_partition || can.takes_partition);
     EXPECT_EQ(b.strategy == BackendStrategy::kSolve, b.solve != nullptr);
-    EXPECT_TRUE(b.strategy == BackendStrategy::kSolve || !b.solves_lp_model);
     EXPECT_EQ(b.strategy == BackendStrategy::kRule, b.backend == SolverBackend::kAuto);
-    ASSERT_NE(b.available, nullptr);
+    ASSERT_NE(b.availability.in_this_build, nullptr);
     // A backend every build has needs no hint; an optional one says how to get it.
-    EXPECT_EQ(std::string(b.missing_hint).empty(),
-              b.available == LookupBackend(SolverBackend::kClp).available);
+    EXPECT_EQ(std::string(b.availability.missing_hint).empty(),
+              b.availability.in_this_build ==
+                  LookupBackend(SolverBackend::kClp).availability.in_this_build);
   }
-  EXPECT_EQ(LookupBackend(SolverBackend::kCbc).available(), CbcAvailable());
+  EXPECT_EQ(LookupBackend(SolverBackend::kCbc).availability.in_this_build(), CbcAvailable());
 }
 
 TEST(LabelingBackends, ValidateAcceptsExactlyTheTable) {
@@ -81,7 +80,8 @@ TEST(LabelingBackends, ValidateAcceptsExactlyTheTable) {
             "band, blocks, cbc");
   for (const LabelingBackend& b : LabelingBackends()) {
     options.backend = b.backend;
-    EXPECT_EQ(options.Validate().has_value(), b.available()) << SolverBackendName(b.backend);
+    EXPECT_EQ(options.Validate().has_value(), b.availability.in_this_build())
+        << SolverBackendName(b.backend);
   }
 }
 
@@ -90,7 +90,7 @@ TEST(LabelingBackends, BlocksTakeThePerBlockBackendsOfThisBuild) {
     BlocksOptions blocks;
     blocks.backend = b.backend;
     const Status s = blocks.Validate();
-    EXPECT_EQ(s.has_value(), b.capabilities.per_block && b.available())
+    EXPECT_EQ(s.has_value(), b.capabilities.per_block && b.availability.in_this_build())
         << SolverBackendName(b.backend);
     if (!b.capabilities.per_block) {
       ASSERT_FALSE(s);
@@ -170,7 +170,7 @@ TEST(LabelingBackends, EveryBackendBoundsTheOptimumAsItsCapabilitiesSay) {
   ASSERT_TRUE(clp);
   for (const LabelingBackend& b : LabelingBackends()) {
     const BackendCapabilities& can = b.capabilities;
-    if (!b.available() || can.needs_partition || can.pairwise_only) continue;
+    if (!b.availability.in_this_build() || can.needs_partition || can.pairwise_only) continue;
     SCOPED_TRACE(SolverBackendName(b.backend));
     const auto r = SolveBy(e, b.backend);
     ASSERT_TRUE(r) << r.error().ToString();

@@ -34,12 +34,12 @@ Status CheckBackend(const char* field, SolverBackend backend, BackendFilter keep
     message += BackendNames(keep);
     return InvalidLabelingOption(message);
   }
-  if (!entry->available()) {
+  if (!entry->availability.in_this_build()) {
     std::string message = field;
     message += ": '";
     message += SolverBackendName(backend);
     message += "' is not in this build (";
-    message += entry->missing_hint;
+    message += entry->availability.missing_hint;
     message += ")";
     return InvalidLabelingOption(message);
   }

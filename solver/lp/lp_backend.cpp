@@ -4,7 +4,6 @@
 #include "solver/energy/build_lp.h"
 #include "solver/lp/band_fixing.h"
 #include "solver/lp/block_labeling.h"
-#include "solver/lp/dual_bound.h"
 #include "solver/lp/group_moves.h"
 #include "solver/lp/labeling_backends.h"
 #include "solver/lp/round_labels.h"
@@ -35,10 +34,7 @@ std::size_t CountBlocks(const EnergyInput& energy, std::span<const std::uint32_t
 
 // What the backend proves about the integral optimum (its entry's BoundProof; band and blocks
 // prove theirs themselves).
-void SetLowerBound(BoundProof proof,
-                   const LpModel& lp,
-                   const LpSolution& solution,
-                   LabelingResult& result) {
+void SetLowerBound(BoundProof proof, const LpSolution& solution, LabelingResult& result) {
   switch (proof) {
     case BoundProof::kLpOptimum:
       result.lower_bound = result.relaxed_objective;
@@ -52,11 +48,9 @@ void SetLowerBound(BoundProof proof,
       result.lower_bound = std::min(solution.lower_bound, result.labels_objective);
       result.lower_bound_source = "energy dual bound";
       break;
-    case BoundProof::kLpDual:
-      // The relaxed objective is a primal value; the dual point proves a bound.
+    case BoundProof::kLpDual:  // the Lagrangian bound of the dual point, when there is one
       if (solution.row_duals.empty()) break;
-      result.lower_bound =
-          std::min(LagrangianBound(lp, solution.row_duals), result.labels_objective);
+      result.lower_bound = std::min(solution.lower_bound, result.labels_objective);
       result.lower_bound_source = "lp dual bound";
       break;
     case BoundProof::kBranchAndBound:
@@ -154,9 +148,8 @@ void SolveOnce(const EnergyInput& energy,
                const LabelingOptions& options,
                const RunContext& ctx,
                LabelingResult& result) {
-  const LpModel lp = backend.solves_lp_model ? BuildLpModel(reduced) : LpModel{};
   const LpSolution solution =
-      backend.solve(BackendInput{.energy = energy, .reduced = reduced, .lp = lp}, options, ctx);
+      backend.solve(BackendInput{.energy = energy, .reduced = reduced}, options, ctx);
   LINESURF_ASSERT(solution.columns.size() >= reduced.NumFree());
 
   // Cell values: clip the first-order backends' small bound violations.
@@ -175,7 +168,7 @@ void SolveOnce(const EnergyInput& energy,
   const bool whole_energy_proven = Improve(energy, options, ctx, result);
   result.status = solution.status;
   result.iterations = solution.iterations;
-  SetLowerBound(backend.bound, lp, solution, result);
+  SetLowerBound(backend.bound, solution, result);
   if (whole_energy_proven) {  // one window held every free cell
     result.lower_bound = result.labels_objective;
     result.lower_bound_source = "integer optimum";

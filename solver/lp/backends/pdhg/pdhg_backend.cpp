@@ -237,17 +237,11 @@ double Merit(const KktErrors& e, double omega) {
 
 class Pdhg {
  public:
-  Pdhg(const LpModel& lp,
-       const PdhgOptions& options,
-       double time_limit_seconds,
-       const RunContext& ctx)
-      : lp_(lp),
-        options_(options),
-        time_limit_seconds_(time_limit_seconds),
-        ctx_(ctx),
-        s_(Scale(lp)) {}
+  Pdhg(const LpModel& lp, const PdhgOptions& options, const RunContext& ctx)
+      : lp_(lp), options_(options), ctx_(ctx), s_(Scale(lp)) {}
 
-  LpSolution Run() {
+  /// time_limit_seconds: 0 = none.
+  LpSolution Run(double time_limit_seconds) {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
     std::vector<double> x(n), y(m, 0.0), ax(m), aty(n, 0.0);
@@ -299,10 +293,10 @@ class Pdhg {
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      LINESURF_THROW_IF(time_limit_seconds_ > 0.0 && elapsed > time_limit_seconds_,
+      LINESURF_THROW_IF(time_limit_seconds > 0.0 && elapsed > time_limit_seconds,
                         kSolverFailed,
                         kPdhgBackendStage,
-                        "pdhg stopped at the time limit of " << time_limit_seconds_ << " s after "
+                        "pdhg stopped at the time limit of " << time_limit_seconds << " s after "
                                                              << it << " iterations");
       const double inv = 1.0 / static_cast<double>(since_restart);
       ForChunks(n, [&](std::size_t b, std::size_t e) {
@@ -383,7 +377,6 @@ class Pdhg {
 
   const LpModel& lp_;
   const PdhgOptions& options_;
-  double time_limit_seconds_;
   const RunContext& ctx_;
   ScaledLp s_;
 };
@@ -400,7 +393,7 @@ LpSolution SolveLpWithPdhg(const LpModel& lp,
     solution.status = "optimal";
     return solution;
   }
-  return RunInArena(ctx, [&] { return Pdhg(lp, options, time_limit_seconds, ctx).Run(); });
+  return RunInArena(ctx, [&] { return Pdhg(lp, options, ctx).Run(time_limit_seconds); });
 }
 
 }  // namespace linesurf::solver

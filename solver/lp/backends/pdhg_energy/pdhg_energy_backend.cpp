@@ -153,17 +153,11 @@ struct Point {
 
 class EnergyPdhg {
  public:
-  EnergyPdhg(const ReducedEnergy& energy,
-             const PdhgEnergyOptions& options,
-             double time_limit_seconds,
-             const RunContext& ctx)
-      : energy_(energy),
-        options_(options),
-        time_limit_seconds_(time_limit_seconds),
-        ctx_(ctx),
-        p_(BuildSaddle(energy)) {}
+  EnergyPdhg(const ReducedEnergy& energy, const PdhgEnergyOptions& options, const RunContext& ctx)
+      : energy_(energy), options_(options), ctx_(ctx), p_(BuildSaddle(energy)) {}
 
-  LpSolution Run() {
+  /// time_limit_seconds: 0 = none.
+  LpSolution Run(double time_limit_seconds) {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = p_.num_cols, m = p_.num_rows;
     // Preconditioned steps (Pock & Chambolle 2011, alpha = 1) for the multipliers scaled to
@@ -216,11 +210,11 @@ class EnergyPdhg {
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      LINESURF_THROW_IF(time_limit_seconds_ > 0.0 && elapsed > time_limit_seconds_,
+      LINESURF_THROW_IF(time_limit_seconds > 0.0 && elapsed > time_limit_seconds,
                         kSolverFailed,
                         kPdhgEnergyStage,
                         "pdhg-energy stopped at the time limit of "
-                            << time_limit_seconds_ << " s after " << it << " iterations");
+                            << time_limit_seconds << " s after " << it << " iterations");
       // The merit is the duality gap at the step's point (feasible; both sets are bounded, so the
       // gap is finite).
       const double gap = Gap(step);
@@ -372,7 +366,6 @@ class EnergyPdhg {
 
   const ReducedEnergy& energy_;
   const PdhgEnergyOptions& options_;
-  double time_limit_seconds_;
   const RunContext& ctx_;
   SaddleProblem p_;
   // A row's step with that many entries, before its weight (0: none); each column's step.
@@ -391,7 +384,7 @@ LpSolution SolveEnergyWithPdhg(const ReducedEnergy& energy,
                                double time_limit_seconds,
                                const RunContext& ctx) {
   return RunInArena(ctx,
-                    [&] { return EnergyPdhg(energy, options, time_limit_seconds, ctx).Run(); });
+                    [&] { return EnergyPdhg(energy, options, ctx).Run(time_limit_seconds); });
 }
 
 }  // namespace linesurf::solver
