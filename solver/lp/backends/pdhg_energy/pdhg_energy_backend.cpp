@@ -383,8 +383,7 @@ LpSolution SolveEnergyWithPdhg(const ReducedEnergy& energy,
                                const PdhgEnergyOptions& options,
                                double time_limit_seconds,
                                const RunContext& ctx) {
-  return RunInArena(ctx,
-                    [&] { return EnergyPdhg(energy, options, ctx).Run(time_limit_seconds); });
+  return RunInArena(ctx, [&] { return EnergyPdhg(energy, options, ctx).Run(time_limit_seconds); });
 }
 
 }  // namespace linesurf::solver
