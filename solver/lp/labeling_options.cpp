@@ -81,7 +81,6 @@ Status BandOptions::Validate() const {
 Status BlocksOptions::Validate() const {
   if (Status s = CheckBackend("block_backend", backend, PerBlockBackend); !s) return s;
   if (sweeps < 0 || sweeps > 100) return InvalidLabelingOption("block_sweeps: must be in [0, 100]");
-  if (max_cells < 1) return InvalidLabelingOption("block_max_cells: must be >= 1");
   if (halo < 0 || halo > 8) return InvalidLabelingOption("block_halo: must be in [0, 8]");
   if (bound_passes < 0 || bound_passes > 10000) {
     return InvalidLabelingOption("block_bound_passes: must be in [0, 10000]");

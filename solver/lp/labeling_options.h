@@ -82,10 +82,6 @@ struct BlocksOptions {
   /// Backend of each block's solve: one the backend table marks usable per block ("auto":
   /// maxflow, clp or pdhg-energy by the block's size; "clp", "pdhg", "pdhg-energy", "cbc").
   SolverBackend backend = SolverBackend::kAuto;
-  /// Cells per block at most in the partition `reconstruct` makes for "blocks" on a monolithic
-  /// complex (k-d blocks of the cells' centroids, pipeline::CentroidBlocks; the block engine
-  /// uses its own blocks); >= 1. The solver itself takes any partition it is given.
-  std::size_t max_cells = 4000;
   /// Sweeps (each solves the blocks whose cells or neighbours changed since their last solve);
   /// [0, 100]. 0 = the max-flow start and the final moves only.
   int sweeps = 2;
