@@ -94,8 +94,8 @@ bool Improve(const EnergyInput& energy, const LabelingOptions& options, const Ru
 }
 
 // Band strategy (band_fixing.h): max-flow of the pairwise part, then the LP of the cells near
-// its surface with every other cell fixed. Sizes reported are those of the full LP (`full`) and,
-// in the backend name, the band's own backend.
+// its surface with every other cell fixed. Sizes reported are those of the full LP (`full`);
+// band_lp_backend names the backend of the band's own LP.
 LabelingResult SolveInBand(const EnergyInput& energy, const LabelingOptions& options,
                            const RunContext& ctx, const LabelingResult& full) {
   const auto start = std::chrono::steady_clock::now();
@@ -207,9 +207,8 @@ LabelingResult Solve(const EnergyInput& energy,
     case BackendStrategy::kSolve:
       SolveOnce(energy, reduced, backend, options, ctx, result);
       break;
-    case BackendStrategy::kRule:  // ResolveBackend resolved it
-      LINESURF_ASSERT(backend.strategy != BackendStrategy::kRule);
-      break;
+    case BackendStrategy::kRule:  // ResolveBackend never returns the rule itself
+      ThrowError(ErrorCode::kInternal, kLpBackendStage, "the auto rule picked no backend");
   }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
