@@ -69,7 +69,7 @@ TEST(FacadeOptions, DefaultsAreTheEngines) {
   EXPECT_EQ(o.sigma, e.energy.sigma);
   EXPECT_EQ(o.samples_per_sigma, e.energy.samples_per_sigma);
   EXPECT_EQ(o.structural_as_textural, e.energy.structural_as_textural);
-  EXPECT_EQ(SolverBackendName(o.solver.backend), e.solver.backend);
+  EXPECT_EQ(o.solver.backend, e.solver.backend);
   EXPECT_EQ(o.solver.time_limit_seconds, e.solver.time_limit_seconds);
   EXPECT_EQ(o.scene_mode, e.scene_mode);
   EXPECT_EQ(o.engine == ComplexEngine::kMonolithic, e.blocks.one_block);

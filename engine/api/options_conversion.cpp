@@ -17,7 +17,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.energy.sigma = options.sigma;
   o.energy.samples_per_sigma = options.samples_per_sigma;
   o.energy.structural_as_textural = options.structural_as_textural;
-  o.solver.backend = SolverBackendName(options.solver.backend);
+  o.solver.backend = options.solver.backend;
   o.solver.time_limit_seconds = options.solver.time_limit_seconds;
   o.scene_mode = options.scene_mode;
   o.blocks.one_block = options.engine == ComplexEngine::kMonolithic;

@@ -18,6 +18,7 @@
 #include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/scene_box.h"
 #include "engine/pipeline/stage_timer.h"
+#include "solver/lp/labeling_backends.h"
 
 namespace linesurf::pipeline {
 namespace {
@@ -41,7 +42,7 @@ void CountViewpointsInFullCells(const Scene& scene, const IdVector<ViewpointId, 
 /// LPs) works on: the partition's own blocks. Empty when no backend that uses it can run.
 std::vector<std::uint32_t> SolveBlocks(const PreparedReconstruction& prepared,
                                        const solver::LabelingOptions& options) {
-  if (options.backend != "auto" && options.backend != "blocks") return {};
+  if (!solver::LookupBackend(options.backend).capabilities.takes_partition) return {};
   return partition::BlockOfEachCell(prepared.blocks.complexes);
 }
 
@@ -337,7 +338,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     stats.lp_variables = labeling.lp_columns;
     stats.lp_constraints = labeling.lp_rows;
     stats.lp_nonzeros = labeling.lp_nonzeros;
-    stats.solver_backend = labeling.backend;
+    stats.solver_backend = solver::BackendReportName(labeling);
     stats.solver_status = labeling.status;
     stats.objective = labeling.labels_objective;
     stats.relaxed_objective = labeling.relaxed_objective;

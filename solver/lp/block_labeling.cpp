@@ -47,7 +47,6 @@ struct BlockOutcome {
   double lower_bound = 0.0;
   /// kCertificate when no LP was solved, else the inner result's bound source.
   std::string bound_source;
-  std::string backend;
   std::string method;
   std::size_t lp_columns = 0;
   std::int64_t iterations = 0;
@@ -68,7 +67,6 @@ BlockOutcome SolveBlock(const SubEnergy& sub,
     out.objective = sub.energy.Evaluate(std::span<const std::uint8_t>(labels));
     out.lower_bound = out.objective;
     out.bound_source = kCertificate;
-    out.backend = "maxflow";
     out.relaxed.assign(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(num_chosen));
   } else {
     Expected<LabelingResult> solved = SolveLabeling(sub.energy, inner, serial);
@@ -78,7 +76,6 @@ BlockOutcome SolveBlock(const SubEnergy& sub,
     out.objective = r.labels_objective;
     out.lower_bound = r.lower_bound;
     out.bound_source = r.lower_bound_source;
-    out.backend = r.backend;
     out.method = r.method;
     out.lp_columns = r.lp_columns;
     out.iterations = r.iterations;
@@ -171,12 +168,11 @@ class BlockSolver {
         incidence_(energy, free_),
         start_(std::chrono::steady_clock::now()) {
     inner_ = options;
-    inner_.backend = options.block_backend;
-    inner_.time_limit_seconds = options.time_limit_seconds;
+    inner_.backend = options.blocks.backend;
     // The exact windows run once on the whole energy after the sweeps, seeded by the blocks'
     // relaxed values; inside every block solve as well they only added time (Andalusian crop:
     // 888.91 in 27.8 CPU s with them, 886.52 in 26.1 s without, by linesurf_block_labelling_study).
-    inner_.window_cells = 0;
+    inner_.improve.window_cells = 0;
   }
 
   LabelingResult Run() {
@@ -189,15 +185,16 @@ class BlockSolver {
     result.lower_bound_source = kPairwiseBound;
     Log("max-flow start " + std::to_string(result.rounded_objective) + ", pairwise bound " +
         std::to_string(result.lower_bound));
-    if (options_.block_split_bound) SplitBound(result);
-    if (options_.block_bound_passes > 0) AscentBound(result);
+    if (options_.blocks.split_bound) SplitBound(result);
+    if (options_.blocks.bound_passes > 0) AscentBound(result);
     Sweep(result);
-    result.local_search_flips = ImproveLabels(energy_, options_.local_search_passes, result.labels);
+    const ImproveOptions& improve = options_.improve;
+    result.local_search_flips = ImproveLabels(energy_, improve.local_search_passes, result.labels);
     result.group_move_changes =
-        ImproveByGroupMoves(energy_, options_.group_move_passes, ctx_, result.labels);
+        ImproveByGroupMoves(energy_, improve.group_move_passes, ctx_, result.labels);
     Log("local search " + std::to_string(result.local_search_flips) + " flips, group moves " +
         std::to_string(result.group_move_changes) + " changes");
-    const WindowPolishStats polished = PolishResultInWindows(energy_, options_, ctx_, result);
+    const WindowPolishStats polished = PolishResultInWindows(energy_, improve, ctx_, result);
     Log("windows: " + std::to_string(polished.windows) + ", " +
         std::to_string(polished.improved_windows) + " improved");
     result.labels_objective = energy_.Evaluate(std::span<const std::uint8_t>(result.labels));
@@ -212,17 +209,18 @@ class BlockSolver {
       result.blocks += blocks_.cells[BlockId(b)].empty() ? 0 : 1;
     }
     result.crossing_terms = blocks_.crossing_terms;
-    result.backend = "blocks";
+    result.backend = SolverBackend::kBlocks;
     result.status = "optimal";
     result.method = "blocks (" + std::to_string(result.blocks) +
                     " blocks): max-flow of the pairwise part, then " +
                     std::to_string(result.block_sweeps) + " sweeps of block solves with " +
-                    std::to_string(options_.block_halo) + "-hop halos (" + CountBackends() + ")";
-    if (options_.local_search_passes > 0) result.method += ", local search";
-    if (options_.group_move_passes > 0) result.method += ", group moves";
+                    std::to_string(options_.blocks.halo) + "-hop halos (" + CountBackends() + ")";
+    if (improve.local_search_passes > 0) result.method += ", local search";
+    if (improve.group_move_passes > 0) result.method += ", group moves";
     if (polished.windows > 0) {
-      result.method +=
-          ", exact windows of " + std::to_string(options_.window_cells) + " cells (cbc)";
+      result.method += ", exact windows of ";
+      result.method += std::to_string(improve.window_cells);
+      result.method += " cells (cbc)";
     }
     result.seconds = Elapsed();
     return result;
@@ -261,7 +259,7 @@ class BlockSolver {
   // when it beats the others.
   void AscentBound(LabelingResult& result) {
     const DualAscentResult ascent =
-        DualAscentBound(reduced_, options_.block_bound_passes, kAscentGain);
+        DualAscentBound(reduced_, options_.blocks.bound_passes, kAscentGain);
     Log("dual ascent bound " + std::to_string(ascent.bound) + " after " +
         std::to_string(ascent.passes) + " passes");
     if (ascent.bound > result.lower_bound) {
@@ -272,11 +270,11 @@ class BlockSolver {
     CheckTime();
   }
 
-  // The free cells within `block_halo` term hops of a block's cells, outside the block.
+  // The free cells within `blocks.halo` term hops of a block's cells, outside the block.
   [[nodiscard]] std::vector<CellId> Halo(std::uint32_t b) const {
     const auto cells = blocks_.cells[BlockId(b)];
     std::vector<CellId> ring(cells.begin(), cells.end()), halo;
-    for (int hop = 0; hop < options_.block_halo; ++hop) {
+    for (int hop = 0; hop < options_.blocks.halo; ++hop) {
       std::vector<CellId> next;
       for (CellId c : ring) {
         for (const TermRef& t : incidence_.Terms(incidence_.Slot(c))) {
@@ -309,7 +307,7 @@ class BlockSolver {
     }
     std::vector<BlockOutcome> outcomes(blocks_.NumBlocks());
     std::vector<std::vector<CellId>> chosen(blocks_.NumBlocks());
-    for (int sweep = 0; sweep < options_.block_sweeps; ++sweep) {
+    for (int sweep = 0; sweep < options_.blocks.sweeps; ++sweep) {
       std::vector<std::uint32_t> list;
       for (std::uint32_t b = 0; b < blocks_.NumBlocks(); ++b) {
         if (dirty[b] != 0) list.push_back(b);

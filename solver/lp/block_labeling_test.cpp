@@ -23,7 +23,7 @@ constexpr double kObjectiveTolerance = 1e-6;
 
 LabelingResult Solve(const EnergyInput& e,
                      std::span<const std::uint32_t> blocks,
-                     const std::string& backend,
+                     SolverBackend backend,
                      int threads = 1) {
   LabelingOptions options;
   options.backend = backend;
@@ -65,9 +65,9 @@ TEST(BlockLabeling, BoundsTheOptimumOfRandomEnergiesForRandomPartitions) {
     const double optimum = testing::BruteForceMinimum(e);
     for (bool split : {false, true}) {
       LabelingOptions options;
-      options.backend = "blocks";
-      options.block_split_bound = split;
-      options.block_bound_passes = split ? 20 : 0;  // every bound once
+      options.backend = SolverBackend::kBlocks;
+      options.blocks.split_bound = split;
+      options.blocks.bound_passes = split ? 20 : 0;  // every bound once
       const auto r = SolveLabeling(e, blocks, options, RunContext{});
       ASSERT_TRUE(r) << r.error().ToString();
       ExpectValid(e, *r);
@@ -82,10 +82,10 @@ TEST(BlockLabeling, OneBlockGivesTheGlobalSolve) {
   spec.nx = spec.ny = spec.nz = 9;
   const EnergyInput e = testing::GridEnergy(spec);
   const std::vector<std::uint32_t> one_block(e.NumCells(), 0);
-  const LabelingResult global = Solve(e, {}, "clp");
+  const LabelingResult global = Solve(e, {}, SolverBackend::kClp);
   LabelingOptions options;
-  options.backend = "blocks";
-  options.block_split_bound = true;
+  options.backend = SolverBackend::kBlocks;
+  options.blocks.split_bound = true;
   const auto solved = SolveLabeling(e, one_block, options, RunContext{});
   ASSERT_TRUE(solved) << solved.error().ToString();
   const LabelingResult& blocks = *solved;
@@ -108,8 +108,8 @@ TEST(BlockLabeling, StaysCloseToTheGlobalSolveOnGridEnergies) {
     spec.nx = spec.ny = spec.nz = n;
     const EnergyInput e = testing::GridEnergy(spec);
     const std::vector<std::uint32_t> partition = testing::GridBlocks(spec, edge);
-    const LabelingResult global = Solve(e, {}, "clp");
-    const LabelingResult blocks = Solve(e, partition, "blocks");
+    const LabelingResult global = Solve(e, {}, SolverBackend::kClp);
+    const LabelingResult blocks = Solve(e, partition, SolverBackend::kBlocks);
     ExpectValid(e, blocks);
     EXPECT_EQ(blocks.blocks, 8u);
     EXPECT_GT(blocks.crossing_terms, 0u);
@@ -133,9 +133,9 @@ TEST(BlockLabeling, BoundsCbcsIntegerOptimum) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 7;
   const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult optimum = Solve(e, {}, "cbc");
+  const LabelingResult optimum = Solve(e, {}, SolverBackend::kCbc);
   ASSERT_EQ(optimum.status, "optimal");
-  const LabelingResult blocks = Solve(e, testing::GridBlocks(spec, 4), "blocks");
+  const LabelingResult blocks = Solve(e, testing::GridBlocks(spec, 4), SolverBackend::kBlocks);
   ExpectValid(e, blocks);
   EXPECT_LE(blocks.lower_bound, optimum.labels_objective + kObjectiveTolerance);
   EXPECT_GE(blocks.labels_objective, optimum.labels_objective - kObjectiveTolerance);
@@ -158,7 +158,7 @@ TEST(BlockLabeling, KeepsFixedCellsWhateverTheirBlockIds) {
     }
     if (e.fixed[CellId(c)] != CellFix::kFree) partition[c] = 0xFFFFFFFFu;  // ignored
   }
-  ExpectValid(e, Solve(e, partition, "blocks"));
+  ExpectValid(e, Solve(e, partition, SolverBackend::kBlocks));
 }
 
 TEST(BlockLabeling, CoordinationNeverRaisesTheEnergy) {
@@ -169,14 +169,14 @@ TEST(BlockLabeling, CoordinationNeverRaisesTheEnergy) {
   // Without the moves and windows after the sweeps (path-dependent heuristics), each sweep
   // continues from the one before: the energy never rises. With them: never above the start.
   LabelingOptions plain;
-  plain.backend = "blocks";
-  plain.local_search_passes = plain.group_move_passes = 0;
-  plain.window_cells = 0;
+  plain.backend = SolverBackend::kBlocks;
+  plain.improve.local_search_passes = plain.improve.group_move_passes = 0;
+  plain.improve.window_cells = 0;
   LabelingOptions defaults;
-  defaults.backend = "blocks";
+  defaults.backend = SolverBackend::kBlocks;
   double previous = std::numeric_limits<double>::infinity();
   for (int sweeps : {0, 1, 3}) {
-    plain.block_sweeps = defaults.block_sweeps = sweeps;
+    plain.blocks.sweeps = defaults.blocks.sweeps = sweeps;
     for (const LabelingOptions& options : {plain, defaults}) {
       const auto r = SolveLabeling(e, partition, options, RunContext{});
       ASSERT_TRUE(r) << r.error().ToString();
@@ -196,10 +196,10 @@ TEST(BlockLabeling, IsIdenticalForAnyThreadCount) {
   spec.nx = spec.ny = spec.nz = 12;
   const EnergyInput e = testing::GridEnergy(spec);
   const std::vector<std::uint32_t> partition = testing::GridBlocks(spec, 3);
-  const LabelingResult one = Solve(e, partition, "blocks", 1);
+  const LabelingResult one = Solve(e, partition, SolverBackend::kBlocks, 1);
   ASSERT_GT(one.blocks, 8u);
   for (int threads : linesurf::testing::kThreadCounts) {
-    const LabelingResult many = Solve(e, partition, "blocks", threads);
+    const LabelingResult many = Solve(e, partition, SolverBackend::kBlocks, threads);
     EXPECT_EQ(many.labels, one.labels) << threads;
     EXPECT_EQ(many.relaxed, one.relaxed) << threads;  // bitwise
     EXPECT_EQ(many.lower_bound, one.lower_bound) << threads;
@@ -214,17 +214,17 @@ TEST(BlockLabeling, AutoChoosesBlocksOnlyAboveTheThresholdWithSeveralBlocks) {
   const std::vector<std::uint32_t> partition = testing::GridBlocks(spec, 4);
   const std::vector<std::uint32_t> one_block(e.NumCells(), 0);
   LabelingOptions options;
-  options.auto_blocks_min_columns = 100;
+  options.auto_rule.blocks_min_columns = 100;
   const auto backend = [&](std::span<const std::uint32_t> blocks) {
     const auto r = SolveLabeling(e, blocks, options, RunContext{});
     EXPECT_TRUE(r) << r.error().ToString();
-    return r ? r->backend : std::string();
+    return r ? r->backend : SolverBackend::kAuto;
   };
-  EXPECT_EQ(backend(partition), "blocks");
-  EXPECT_EQ(backend(one_block), "clp");
-  EXPECT_EQ(backend({}), "clp");
-  options.auto_blocks_min_columns = 1000000;
-  EXPECT_EQ(backend(partition), "clp");
+  EXPECT_EQ(backend(partition), SolverBackend::kBlocks);
+  EXPECT_EQ(backend(one_block), SolverBackend::kClp);
+  EXPECT_EQ(backend({}), SolverBackend::kClp);
+  options.auto_rule.blocks_min_columns = 1000000;
+  EXPECT_EQ(backend(partition), SolverBackend::kClp);
 }
 
 TEST(BlockLabeling, RefusesAMissingOrMisfitPartition) {
@@ -232,7 +232,7 @@ TEST(BlockLabeling, RefusesAMissingOrMisfitPartition) {
   spec.nx = spec.ny = spec.nz = 5;
   const EnergyInput e = testing::GridEnergy(spec);
   LabelingOptions options;
-  options.backend = "blocks";
+  options.backend = SolverBackend::kBlocks;
   const auto missing = SolveLabeling(e, options, RunContext{});
   ASSERT_FALSE(missing);
   EXPECT_EQ(missing.error().code, ErrorCode::kInvalidOptions);
@@ -240,7 +240,7 @@ TEST(BlockLabeling, RefusesAMissingOrMisfitPartition) {
   const auto misfit = SolveLabeling(e, short_partition, options, RunContext{});
   ASSERT_FALSE(misfit);
   EXPECT_EQ(misfit.error().code, ErrorCode::kInvalidInput);
-  options.block_sweeps = -1;
+  options.blocks.sweeps = -1;
   EXPECT_FALSE(options.Validate());
 }
 

@@ -15,7 +15,7 @@ constexpr double kBoundTolerance = 1e-7;
 
 double LpOptimum(const EnergyInput& e) {
   LabelingOptions options;
-  options.backend = "clp";
+  options.backend = SolverBackend::kClp;
   const auto r = SolveLabeling(e, options, RunContext{});
   EXPECT_TRUE(r) << r.error().ToString();
   return r ? r->relaxed_objective : 0.0;

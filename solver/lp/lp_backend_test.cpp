@@ -21,7 +21,7 @@ constexpr double kExactObjectiveTolerance = 1e-9;
 // Relative agreement of pdhg (tolerance 1e-4) with Clp's optimum.
 constexpr double kPdhgAgreement = 1e-3;
 
-LabelingResult MustSolve(const EnergyInput& e, const std::string& backend, int threads = 1) {
+LabelingResult MustSolve(const EnergyInput& e, SolverBackend backend, int threads = 1) {
   LabelingOptions options;
   options.backend = backend;
   RunContext ctx;
@@ -47,7 +47,7 @@ EnergyInput Chain() {
   return e;
 }
 
-class EveryBackend : public ::testing::TestWithParam<std::string> {};
+class EveryBackend : public ::testing::TestWithParam<SolverBackend> {};
 
 TEST_P(EveryBackend, ChainGivesTheMinCut) {
   const LabelingResult r = MustSolve(Chain(), GetParam());
@@ -69,9 +69,13 @@ TEST_P(EveryBackend, FixedCellsAreRespected) {
 
 INSTANTIATE_TEST_SUITE_P(Solver,
                          EveryBackend,
-                         ::testing::Values("clp", "maxflow", "pdhg", "pdhg-energy", "auto"));
+                         ::testing::Values(SolverBackend::kClp,
+                                           SolverBackend::kMaxflow,
+                                           SolverBackend::kPdhg,
+                                           SolverBackend::kPdhgEnergy,
+                                           SolverBackend::kAuto));
 
-class LpBackends : public ::testing::TestWithParam<std::string> {};
+class LpBackends : public ::testing::TestWithParam<SolverBackend> {};
 
 TEST_P(LpBackends, StructuralGroupForcesOneCellFull) {
   // Three cells, a slight cost for being full, one structural group over all of them: exactly
@@ -120,7 +124,7 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
     const double best = testing::BruteForceMinimum(e);
-    const LabelingResult clp = MustSolve(e, "clp");
+    const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
     const LabelingResult other = MustSolve(e, GetParam());
     // The relaxation bounds the integral optimum from below.
     EXPECT_LE(clp.relaxed_objective, best + kObjectiveTolerance);
@@ -139,7 +143,11 @@ TEST_P(LpBackends, MatchClpOnRandomEnergies) {
   EXPECT_GT(integral, 5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Solver, LpBackends, ::testing::Values("clp", "pdhg", "pdhg-energy"));
+INSTANTIATE_TEST_SUITE_P(Solver,
+                         LpBackends,
+                         ::testing::Values(SolverBackend::kClp,
+                                           SolverBackend::kPdhg,
+                                           SolverBackend::kPdhgEnergy));
 
 TEST(SolveLabeling, MaxflowMatchesClpOnPairwiseEnergies) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
@@ -150,8 +158,8 @@ TEST(SolveLabeling, MaxflowMatchesClpOnPairwiseEnergies) {
     spec.num_parity = 0;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    const LabelingResult clp = MustSolve(e, "clp");
-    const LabelingResult flow = MustSolve(e, "maxflow");
+    const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
+    const LabelingResult flow = MustSolve(e, SolverBackend::kMaxflow);
     EXPECT_NEAR(flow.labels_objective, clp.relaxed_objective, kObjectiveTolerance) << seed;
     EXPECT_NEAR(clp.labels_objective, clp.relaxed_objective, kObjectiveTolerance) << seed;
   }
@@ -164,7 +172,7 @@ TEST(SolveLabeling, MaxflowRefusesHigherOrderTerms) {
   const CellId group[] = {CellId(0u), CellId(1u)};
   e.AddStructuralGroup(group, 1.0);
   LabelingOptions options;
-  options.backend = "maxflow";
+  options.backend = SolverBackend::kMaxflow;
   const auto result = SolveLabeling(e, options, RunContext{});
   ASSERT_FALSE(result);
   EXPECT_EQ(result.error().code, ErrorCode::kInvalidOptions);
@@ -174,14 +182,15 @@ TEST(SolveLabeling, MaxflowRefusesHigherOrderTerms) {
 }
 
 TEST(SolveLabeling, AutoPicksMaxflowOnlyWhenExact) {
-  EXPECT_EQ(MustSolve(Chain(), "auto").backend, "maxflow");
+  EXPECT_EQ(MustSolve(Chain(), SolverBackend::kAuto).backend, SolverBackend::kMaxflow);
   testing::RandomEnergySpec spec;
-  EXPECT_EQ(MustSolve(testing::RandomEnergy(spec), "auto").backend, "clp");
+  EXPECT_EQ(MustSolve(testing::RandomEnergy(spec), SolverBackend::kAuto).backend,
+            SolverBackend::kClp);
   LabelingOptions options;
-  options.auto_clp_max_columns = 5;
+  options.auto_rule.clp_max_columns = 5;
   const auto large = SolveLabeling(testing::RandomEnergy(spec), options, RunContext{});
   ASSERT_TRUE(large);
-  EXPECT_EQ(large->backend, "pdhg-energy");
+  EXPECT_EQ(large->backend, SolverBackend::kPdhgEnergy);
 }
 
 TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
@@ -189,13 +198,13 @@ TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
   spec.nx = spec.ny = spec.nz = 8;
   const EnergyInput e = testing::GridEnergy(spec);
   LabelingOptions plain;
-  plain.backend = "clp";
-  plain.local_search_passes = 0;
-  plain.group_move_passes = 0;
-  plain.window_cells = 0;
+  plain.backend = SolverBackend::kClp;
+  plain.improve.local_search_passes = 0;
+  plain.improve.group_move_passes = 0;
+  plain.improve.window_cells = 0;
   const auto rounded = SolveLabeling(e, plain, RunContext{});
   LabelingOptions searched = plain;
-  searched.local_search_passes = 10;
+  searched.improve.local_search_passes = 10;
   const auto improved = SolveLabeling(e, searched, RunContext{});
   ASSERT_TRUE(rounded && improved);
   EXPECT_EQ(rounded->local_search_flips, 0u);
@@ -206,13 +215,13 @@ TEST(SolveLabeling, LocalSearchNeverRaisesTheEnergy) {
 
 TEST(SolveLabeling, RejectsBadOptionsAndInput) {
   LabelingOptions options;
-  options.backend = "mosek";
+  options.backend = static_cast<SolverBackend>(42);
   EXPECT_EQ(SolveLabeling(Chain(), options, RunContext{}).error().code, ErrorCode::kInvalidOptions);
   options = {};
-  options.pdhg_tolerance = 0.0;
+  options.pdhg.tolerance = 0.0;
   EXPECT_EQ(SolveLabeling(Chain(), options, RunContext{}).error().code, ErrorCode::kInvalidOptions);
   options = {};
-  options.pdhg_energy_tolerance = 0.2;
+  options.pdhg_energy.tolerance = 0.2;
   const auto too_loose = SolveLabeling(Chain(), options, RunContext{});
   ASSERT_FALSE(too_loose);
   EXPECT_NE(too_loose.error().message.find("pdhg_energy_tolerance"), std::string::npos);
@@ -227,17 +236,17 @@ TEST(SolveLabeling, CancelledRunReturnsCancelled) {
   ctx.is_cancelled = [] { return true; };
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 8;
-  for (const char* backend : {"clp", "pdhg"}) {
+  for (const SolverBackend backend : {SolverBackend::kClp, SolverBackend::kPdhg}) {
     LabelingOptions options;
     options.backend = backend;
     const auto result = SolveLabeling(testing::GridEnergy(spec), options, ctx);
-    ASSERT_FALSE(result) << backend;
-    EXPECT_EQ(result.error().code, ErrorCode::kCancelled) << backend;
+    ASSERT_FALSE(result) << SolverBackendName(backend);
+    EXPECT_EQ(result.error().code, ErrorCode::kCancelled) << SolverBackendName(backend);
   }
 }
 
 TEST(SolveLabeling, EmptyEnergySolves) {
-  const LabelingResult r = MustSolve(EnergyInput{}, "clp");
+  const LabelingResult r = MustSolve(EnergyInput{}, SolverBackend::kClp);
   EXPECT_TRUE(r.labels.empty());
   EXPECT_EQ(r.lp_columns, 0u);
 }
@@ -253,14 +262,15 @@ TEST(SolveLabeling, FirstOrderBackendsAreIdenticalForAnyThreadCount) {
   spec.nx = spec.ny = spec.nz = 14;  // LP of ~16k columns, 2.7k cells: several parallel chunks
   const EnergyInput e = testing::GridEnergy(spec);
   const linesurf::testing::RealThreadCounts real_threads;
-  for (const char* backend : {"pdhg", "pdhg-energy"}) {
+  for (const SolverBackend backend : {SolverBackend::kPdhg, SolverBackend::kPdhgEnergy}) {
     const LabelingResult one = MustSolve(e, backend, 1);
     ASSERT_GT(one.lp_columns, 10000u);
     for (int threads : linesurf::testing::kThreadCounts) {
       const LabelingResult many = MustSolve(e, backend, threads);
-      EXPECT_EQ(many.labels, one.labels) << backend << " " << threads;
-      EXPECT_EQ(many.relaxed, one.relaxed) << backend << " " << threads;  // bitwise
-      EXPECT_EQ(many.iterations, one.iterations) << backend << " " << threads;
+      EXPECT_EQ(many.labels, one.labels) << SolverBackendName(backend) << " " << threads;
+      EXPECT_EQ(many.relaxed, one.relaxed)
+          << SolverBackendName(backend) << " " << threads;  // bitwise
+      EXPECT_EQ(many.iterations, one.iterations) << SolverBackendName(backend) << " " << threads;
     }
   }
 }
@@ -269,24 +279,27 @@ TEST(SolveLabeling, FirstOrderBackendsAreCloseToClpOnAGridEnergy) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 10;
   const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult clp = MustSolve(e, "clp");
-  for (const char* backend : {"pdhg", "pdhg-energy"}) {
+  const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
+  for (const SolverBackend backend : {SolverBackend::kPdhg, SolverBackend::kPdhgEnergy}) {
     const LabelingResult first_order = MustSolve(e, backend);
     EXPECT_NEAR(first_order.relaxed_objective,
                 clp.relaxed_objective,
                 kPdhgAgreement * clp.relaxed_objective)
-        << backend;
+        << SolverBackendName(backend);
     EXPECT_GE(first_order.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance)
-        << backend;
+        << SolverBackendName(backend);
   }
 }
 
 TEST(SolveLabeling, BandIsAnUpperBoundOfTheFullLpAndKeepsFixes) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const EnergyInput e = testing::SmallRandomEnergy(seed);
-    const LabelingResult clp = MustSolve(e, "clp");
-    const LabelingResult band = MustSolve(e, "band");
-    EXPECT_EQ(band.backend.rfind("band+", 0), 0u) << band.backend;
+    const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
+    const LabelingResult band = MustSolve(e, SolverBackend::kBand);
+    EXPECT_EQ(band.backend, SolverBackend::kBand);
+    ASSERT_TRUE(band.band_lp_backend.has_value());
+    EXPECT_EQ(BackendReportName(band),
+              std::string("band+") + SolverBackendName(*band.band_lp_backend));
     EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance) << seed;
     EXPECT_NEAR(band.labels_objective,
                 e.Evaluate(std::span<const std::uint8_t>(band.labels)),
@@ -304,8 +317,8 @@ TEST(SolveLabeling, BandOnAGridEnergyIsCloseToTheFullLp) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 10;
   const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult clp = MustSolve(e, "clp");
-  const LabelingResult band = MustSolve(e, "band");
+  const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
+  const LabelingResult band = MustSolve(e, SolverBackend::kBand);
   EXPECT_LT(band.band_lp_columns, clp.lp_columns);
   EXPECT_GE(band.relaxed_objective, clp.relaxed_objective - kObjectiveTolerance);
   // The labels of the band are within 5 % of the energy of the full LP's labels.
@@ -330,7 +343,7 @@ TEST(SolveLabeling, CbcFindsTheBruteForceOptimum) {
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
     const double best = testing::BruteForceMinimum(e);
-    const LabelingResult cbc = MustSolve(e, "cbc");
+    const LabelingResult cbc = MustSolve(e, SolverBackend::kCbc);
     EXPECT_EQ(cbc.status, "optimal") << seed;
     EXPECT_EQ(cbc.lower_bound_source, "integer optimum") << seed;
     EXPECT_NEAR(cbc.labels_objective, best, kObjectiveTolerance) << seed;
@@ -357,11 +370,13 @@ TEST(SolveLabeling, LowerBoundsAreBelowTheIntegralOptimum) {
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
     const double best = testing::BruteForceMinimum(e);
-    for (const char* backend : {"clp", "band"}) {
+    for (const SolverBackend backend : {SolverBackend::kClp, SolverBackend::kBand}) {
       const LabelingResult r = MustSolve(e, backend);
-      EXPECT_NE(r.lower_bound_source, "none") << backend;
-      EXPECT_LE(r.lower_bound, best + kObjectiveTolerance) << backend << " seed " << seed;
-      EXPECT_GE(r.labels_objective, best - kObjectiveTolerance) << backend << " seed " << seed;
+      EXPECT_NE(r.lower_bound_source, "none") << SolverBackendName(backend);
+      EXPECT_LE(r.lower_bound, best + kObjectiveTolerance)
+          << SolverBackendName(backend) << " seed " << seed;
+      EXPECT_GE(r.labels_objective, best - kObjectiveTolerance)
+          << SolverBackendName(backend) << " seed " << seed;
     }
   }
 }
@@ -379,11 +394,11 @@ LabelingResult SolveWith(const EnergyInput& e, LabelingOptions options) {
 }
 
 // The labelling without its improvement: rounding and single-cell local search only.
-LabelingOptions RoundingAndLocalSearch(const std::string& backend) {
+LabelingOptions RoundingAndLocalSearch(SolverBackend backend) {
   LabelingOptions o;
   o.backend = backend;
-  o.group_move_passes = 0;
-  o.window_cells = 0;
+  o.improve.group_move_passes = 0;
+  o.improve.window_cells = 0;
   return o;
 }
 
@@ -397,21 +412,22 @@ TEST(ImprovedLabelling, NeverWorseThanLocalSearchAndOptimalWhereCbcProvesIt) {
     spec.num_parity = spec.num_cells / 3;
     spec.seed = seed;
     const EnergyInput e = testing::RandomEnergy(spec);
-    for (const char* backend : {"clp", "pdhg"}) {
+    for (const SolverBackend backend : {SolverBackend::kClp, SolverBackend::kPdhg}) {
       const LabelingResult before = SolveWith(e, RoundingAndLocalSearch(backend));
       LabelingOptions defaults;
       defaults.backend = backend;
       const LabelingResult after = SolveWith(e, defaults);
       LabelingOptions exact;
-      exact.backend = "cbc";
+      exact.backend = SolverBackend::kCbc;
       const LabelingResult optimum = SolveWith(e, exact);
       ASSERT_EQ(optimum.status, "optimal") << seed;
       EXPECT_LE(after.labels_objective, before.labels_objective + kExactObjectiveTolerance)
-          << backend << seed;
+          << SolverBackendName(backend) << seed;
       EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance)
-          << backend << " seed " << seed;
+          << SolverBackendName(backend) << " seed " << seed;
       if (after.windows > 0) {  // the window held every free cell: the optimum is proven
-        EXPECT_EQ(after.lower_bound_source, "integer optimum") << backend << " seed " << seed;
+        EXPECT_EQ(after.lower_bound_source, "integer optimum")
+            << SolverBackendName(backend) << " seed " << seed;
       }
     }
   }
@@ -424,12 +440,12 @@ TEST(ImprovedLabelling, ReachesCbcsOptimumOnASmallGridEnergy) {
   spec.nx = spec.ny = spec.nz = 7;
   const EnergyInput e = testing::GridEnergy(spec);
   LabelingOptions exact;
-  exact.backend = "cbc";
+  exact.backend = SolverBackend::kCbc;
   const LabelingResult optimum = SolveWith(e, exact);
   ASSERT_EQ(optimum.status, "optimal");
-  const LabelingResult before = SolveWith(e, RoundingAndLocalSearch("clp"));
+  const LabelingResult before = SolveWith(e, RoundingAndLocalSearch(SolverBackend::kClp));
   LabelingOptions defaults;
-  defaults.backend = "clp";
+  defaults.backend = SolverBackend::kClp;
   const LabelingResult after = SolveWith(e, defaults);
   EXPECT_LE(after.labels_objective, before.labels_objective + kExactObjectiveTolerance);
   EXPECT_NEAR(after.labels_objective, optimum.labels_objective, kObjectiveTolerance);
@@ -440,9 +456,9 @@ TEST(ImprovedLabelling, IsIdenticalForAnyThreadCount) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 9;
   const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult one = MustSolve(e, "clp", 1);
+  const LabelingResult one = MustSolve(e, SolverBackend::kClp, 1);
   for (int threads : {2, 3, 8}) {
-    const LabelingResult many = MustSolve(e, "clp", threads);
+    const LabelingResult many = MustSolve(e, SolverBackend::kClp, threads);
     EXPECT_EQ(many.labels, one.labels) << threads;
     EXPECT_EQ(many.windows, one.windows) << threads;
   }
@@ -460,14 +476,16 @@ TEST(SolveLabeling, FirstOrderDualBoundsAreValidAndCloseLowerBounds) {
   testing::GridEnergySpec spec;
   spec.nx = spec.ny = spec.nz = 10;
   const EnergyInput e = testing::GridEnergy(spec);
-  const LabelingResult clp = MustSolve(e, "clp");
-  const std::pair<const char*, const char*> kSources[] = {{"pdhg", "lp dual bound"},
-                                                          {"pdhg-energy", "energy dual bound"}};
+  const LabelingResult clp = MustSolve(e, SolverBackend::kClp);
+  const std::pair<SolverBackend, const char*> kSources[] = {
+      {SolverBackend::kPdhg, "lp dual bound"}, {SolverBackend::kPdhgEnergy, "energy dual bound"}};
   for (const auto& [backend, source] : kSources) {
     const LabelingResult first_order = MustSolve(e, backend);
     EXPECT_EQ(first_order.lower_bound_source, source);
-    EXPECT_LE(first_order.lower_bound, clp.relaxed_objective + kObjectiveTolerance) << backend;
-    EXPECT_GE(first_order.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement)) << backend;
+    EXPECT_LE(first_order.lower_bound, clp.relaxed_objective + kObjectiveTolerance)
+        << SolverBackendName(backend);
+    EXPECT_GE(first_order.lower_bound, clp.relaxed_objective * (1.0 - kPdhgAgreement))
+        << SolverBackendName(backend);
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
       testing::RandomEnergySpec random;
       random.seed = seed;
@@ -475,8 +493,9 @@ TEST(SolveLabeling, FirstOrderDualBoundsAreValidAndCloseLowerBounds) {
       // Without windows: one window holding every cell would prove the (higher) integer optimum.
       const LabelingResult only = SolveWith(r, RoundingAndLocalSearch(backend));
       EXPECT_EQ(only.lower_bound_source, source);
-      EXPECT_LE(only.lower_bound, MustSolve(r, "clp").relaxed_objective + kExactObjectiveTolerance)
-          << backend << " " << seed;
+      EXPECT_LE(only.lower_bound,
+                MustSolve(r, SolverBackend::kClp).relaxed_objective + kExactObjectiveTolerance)
+          << SolverBackendName(backend) << " " << seed;
     }
   }
 }

@@ -184,7 +184,7 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
 }
 
 WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
-                                        const LabelingOptions& options,
+                                        const ImproveOptions& options,
                                         const RunContext& ctx,
                                         LabelingResult& result) {
   WindowPolishOptions windows;

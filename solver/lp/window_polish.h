@@ -51,7 +51,7 @@ WindowPolishStats PolishInWindows(const EnergyInput& energy,
 /// window_max_nodes, window_max_count) on result.labels, seeded by result.relaxed; the counts go
 /// to result.windows, improved_windows and window_changes.
 WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
-                                        const LabelingOptions& options,
+                                        const ImproveOptions& options,
                                         const RunContext& ctx,
                                         LabelingResult& result);
 

@@ -17,10 +17,10 @@
 //       margin given; every other option at its default), solved once per variant
 //       BACKEND[:KEY=VALUE,...] with the engine's blocks as the partition
 //       (docs/design/lp_backend.md, "Energy pdhg").
-// `inner` is LabelingOptions::block_backend; KEY=VALUE sets other LabelingOptions fields:
-// window_cells, block_halo, local_search_passes, group_move_passes, pdhg_tolerance,
-// pdhg_energy_tolerance, auto_clp_max_columns, block_bound_passes, block_sweeps,
-// auto_blocks_min_columns.
+// `inner` is BlocksOptions::backend; KEY=VALUE sets other LabelingOptions fields: window_cells,
+// block_halo, local_search_passes, group_move_passes (improve.*, blocks.halo), pdhg_tolerance
+// (pdhg.tolerance), pdhg_energy_tolerance (pdhg_energy.tolerance), auto_clp_max_columns,
+// auto_blocks_min_columns (auto_rule.*), block_bound_passes, block_sweeps (blocks.*).
 
 #include "engine/io/read_scene.h"
 #include "engine/pipeline/block_evidence.h"
@@ -31,12 +31,13 @@
 #include "engine/pipeline/scene_box.h"
 #include "tests/support/one_complex_evidence.h"
 #include "solver/lp/lp_backend.h"
-#include "tests/support/random_energy.h"
 #include "tests/bench/crop_scene.h"
+#include "tests/support/random_energy.h"
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -63,6 +64,15 @@ std::vector<double> ParseList(const char* text) {
   std::string item;
   while (std::getline(in, item, ',')) out.push_back(std::stod(item));
   return out;
+}
+
+// The backend named `name` (SolverBackendName's names).
+SolverBackend Backend(const std::string& name) {
+  const std::optional<SolverBackend> backend = SolverBackendFromName(name);
+  if (!backend) {
+    Fail(Error{ErrorCode::kInvalidOptions, "block_labelling_study", "no backend '" + name + "'"});
+  }
+  return *backend;
 }
 
 double Seconds(std::chrono::steady_clock::time_point start) {
@@ -104,7 +114,7 @@ void Print(const Row& row) {
       "%.2f %% | %zu | %.1f | %.1f |\n",
       row.energy.c_str(),
       row.partition.c_str(),
-      r.backend.c_str(),
+      solver::BackendReportName(r).c_str(),
       r.blocks,
       r.crossing_terms,
       r.block_solves,
@@ -159,15 +169,15 @@ int Grids(const char* sizes,
     const solver::EnergyInput energy = solver::testing::GridEnergy(spec);
     const std::string name = "grid " + std::to_string(spec.nx) + "^3";
     solver::LabelingOptions options;
-    options.backend = "blocks";
-    options.block_backend = inner;
+    options.backend = SolverBackend::kBlocks;
+    options.blocks.backend = Backend(inner);
     for (double edge : ParseList(edges)) {
       const auto blocks = solver::testing::GridBlocks(spec, static_cast<int>(edge));
       const std::string partition = "cubes of " + std::to_string(static_cast<int>(edge)) + "^3";
       Print(Run(name, partition, energy, blocks, options, threads));
     }
     if (global != "none") {
-      options.backend = global;
+      options.backend = Backend(global);
       Print(Run(name, "none", energy, {}, options, threads));
     }
   }
@@ -184,25 +194,25 @@ bool SetOptions(const std::string& list, solver::LabelingOptions& options) {
     const std::string key = item.substr(0, eq);
     const double value = std::stod(item.substr(eq + 1));
     if (key == "window_cells") {
-      options.window_cells = static_cast<std::size_t>(value);
+      options.improve.window_cells = static_cast<std::size_t>(value);
     } else if (key == "block_halo") {
-      options.block_halo = static_cast<int>(value);
+      options.blocks.halo = static_cast<int>(value);
     } else if (key == "local_search_passes") {
-      options.local_search_passes = static_cast<int>(value);
+      options.improve.local_search_passes = static_cast<int>(value);
     } else if (key == "group_move_passes") {
-      options.group_move_passes = static_cast<int>(value);
+      options.improve.group_move_passes = static_cast<int>(value);
     } else if (key == "pdhg_tolerance") {
-      options.pdhg_tolerance = value;
+      options.pdhg.tolerance = value;
     } else if (key == "pdhg_energy_tolerance") {
-      options.pdhg_energy_tolerance = value;
+      options.pdhg_energy.tolerance = value;
     } else if (key == "auto_clp_max_columns") {
-      options.auto_clp_max_columns = static_cast<std::size_t>(value);
+      options.auto_rule.clp_max_columns = static_cast<std::size_t>(value);
     } else if (key == "block_bound_passes") {
-      options.block_bound_passes = static_cast<int>(value);
+      options.blocks.bound_passes = static_cast<int>(value);
     } else if (key == "block_sweeps") {
-      options.block_sweeps = static_cast<int>(value);
+      options.blocks.sweeps = static_cast<int>(value);
     } else if (key == "auto_blocks_min_columns") {
-      options.auto_blocks_min_columns = static_cast<std::size_t>(value);
+      options.auto_rule.blocks_min_columns = static_cast<std::size_t>(value);
     } else {
       return false;
     }
@@ -279,9 +289,9 @@ int SceneStudy(const char* path,
       threads);
   std::fflush(stdout);
   PrintHeader();
-  options.backend = "blocks";
-  options.block_sweeps = sweeps;
-  options.block_backend = inner;
+  options.backend = SolverBackend::kBlocks;
+  options.blocks.sweeps = sweeps;
+  options.blocks.backend = Backend(inner);
   for (double m : ParseList(max_cells)) {
     const auto partition_start = std::chrono::steady_clock::now();
     const std::vector<std::uint32_t> blocks =
@@ -297,7 +307,7 @@ int SceneStudy(const char* path,
     Print(row);
   }
   if (global != "none") {
-    options.backend = global;
+    options.backend = Backend(global);
     Print(Run(name, "none", evidence.energy, {}, options, threads));
   }
   return 0;
@@ -358,7 +368,7 @@ int EngineStudy(const char* path,
   while (std::getline(in, variant, ';')) {
     solver::LabelingOptions options;
     const std::size_t colon = variant.find(':');
-    options.backend = variant.substr(0, colon);
+    options.backend = Backend(variant.substr(0, colon));
     if (colon != std::string::npos && !SetOptions(variant.substr(colon + 1), options)) {
       std::fprintf(stderr, "block_labelling_study: bad variant '%s'\n", variant.c_str());
       return 2;

@@ -52,11 +52,11 @@ struct Outcome {
 using Solve = std::function<Outcome(const solver::LabelingOptions&)>;
 
 // Default options with the improvement steps after local search switched on or off.
-solver::LabelingOptions Options(const std::string& backend, bool group_moves, bool windows) {
+solver::LabelingOptions Options(SolverBackend backend, bool group_moves, bool windows) {
   solver::LabelingOptions o;
   o.backend = backend;
-  if (!group_moves) o.group_move_passes = 0;
-  if (!windows) o.window_cells = 0;
+  if (!group_moves) o.improve.group_move_passes = 0;
+  if (!windows) o.improve.window_cells = 0;
   return o;
 }
 
@@ -74,10 +74,10 @@ void PrintHeader() {
 
 // Clp's LP with and without group moves (local search on), then Cbc.
 void PrintRow(const std::string& name, const Solve& solve, double cbc_seconds) {
-  const Outcome lp = solve(Options("clp", false, false));
-  const Outcome grouped = solve(Options("clp", true, false));
-  const Outcome windowed = solve(Options("clp", true, true));
-  solver::LabelingOptions cbc_options = Options("cbc", false, false);
+  const Outcome lp = solve(Options(SolverBackend::kClp, false, false));
+  const Outcome grouped = solve(Options(SolverBackend::kClp, true, false));
+  const Outcome windowed = solve(Options(SolverBackend::kClp, true, true));
+  solver::LabelingOptions cbc_options = Options(SolverBackend::kCbc, false, false);
   cbc_options.time_limit_seconds = cbc_seconds;
   const Outcome ilp = solve(cbc_options);
   const bool proven = ilp.status == "optimal";
@@ -119,7 +119,7 @@ Outcome FromLabeling(const solver::LabelingResult& r, std::size_t cells) {
   o.lower_bound_source = r.lower_bound_source;
   o.method = r.method;
   o.status = r.status;
-  o.backend = r.backend;
+  o.backend = solver::BackendReportName(r);
   o.cells = cells;
   o.lp_columns = r.lp_columns;
   o.seconds = r.seconds;
@@ -238,11 +238,11 @@ int Andalusian(const char* path, const char* box, double cbc_seconds) {
   std::printf(
       "| solve | method | cells | LP columns | objective | full cells | lower bound (source) | "
       "solve s |\n|---|---|---|---|---|---|---|---|\n");
-  for (const char* backend : {"pdhg", "band"}) {
+  for (const SolverBackend backend : {SolverBackend::kPdhg, SolverBackend::kBand}) {
     for (const bool improve : {false, true}) {
       const Outcome r = solve(Options(backend, improve, improve));
       std::printf("| %s%s | %s | %zu | %zu | %.6g | %zu | %.6g (%s) | %.1f |\n",
-                  backend,
+                  SolverBackendName(backend),
                   improve ? "" : " (rounding and local search only)",
                   r.method.c_str(),
                   r.cells,
@@ -255,7 +255,7 @@ int Andalusian(const char* path, const char* box, double cbc_seconds) {
       std::fflush(stdout);
     }
   }
-  solver::LabelingOptions cbc_options = Options("cbc", false, false);
+  solver::LabelingOptions cbc_options = Options(SolverBackend::kCbc, false, false);
   cbc_options.time_limit_seconds = cbc_seconds;
   const Outcome ilp = solve(cbc_options);
   std::printf("| cbc | %s | %zu | %zu | %.6g (%s) | %zu | %.6g (%s) | %.1f |\n",

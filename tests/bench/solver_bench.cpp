@@ -22,7 +22,8 @@
 namespace linesurf::solver {
 namespace {
 
-const char* const kBackends[] = {"clp", "pdhg", "clp-barrier", "maxflow"};
+constexpr SolverBackend kBackends[] = {
+    SolverBackend::kClp, SolverBackend::kPdhg, SolverBackend::kClpBarrier, SolverBackend::kMaxflow};
 
 EnergyInput Grid(int n, bool higher_order) {
   testing::GridEnergySpec spec;
@@ -51,7 +52,7 @@ void BM_Solve(benchmark::State& state) {
   const EnergyInput energy = Grid(static_cast<int>(state.range(0)), state.range(3) != 0);
   LabelingOptions options;
   options.backend = kBackends[state.range(1)];
-  options.local_search_passes = 10;
+  options.improve.local_search_passes = 10;
   RunContext ctx;
   ctx.num_threads = static_cast<int>(state.range(2));
   LabelingResult last;
@@ -63,7 +64,8 @@ void BM_Solve(benchmark::State& state) {
     }
     last = std::move(result).value();
   }
-  state.SetLabel(std::string(options.backend) + " cells=" + std::to_string(energy.NumCells()));
+  state.SetLabel(std::string(SolverBackendName(options.backend)) +
+                 " cells=" + std::to_string(energy.NumCells()));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * energy.NumCells()));
   Report(state, last);
 }
@@ -73,10 +75,10 @@ void BM_Solve(benchmark::State& state) {
 void BM_CompareWithClp(benchmark::State& state) {
   const EnergyInput energy = Grid(static_cast<int>(state.range(0)), state.range(2) != 0);
   LabelingOptions clp_options;
-  clp_options.backend = "clp";
-  clp_options.local_search_passes = 10;
+  clp_options.backend = SolverBackend::kClp;
+  clp_options.improve.local_search_passes = 10;
   LabelingOptions options;
-  options.local_search_passes = 10;
+  options.improve.local_search_passes = 10;
   options.backend = kBackends[state.range(1)];
   RunContext ctx;
   for (auto _ : state) {
@@ -101,8 +103,8 @@ void BM_CompareWithClp(benchmark::State& state) {
     state.counters["clp_rounded_obj"] = reference->rounded_objective;
     state.counters["rounded_obj"] = other->rounded_objective;
   }
-  state.SetLabel(std::string(options.backend) + " vs clp, cells=" +
-                 std::to_string(energy.NumCells()));
+  state.SetLabel(std::string(SolverBackendName(options.backend)) +
+                 " vs clp, cells=" + std::to_string(energy.NumCells()));
 }
 
 // Full energies: clp and pdhg at 8k, 27k, 195k cells; pdhg at 1 and 2 threads.

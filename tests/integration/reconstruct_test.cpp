@@ -411,7 +411,7 @@ TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
 TEST(Reconstruct, AutoSolvesLargeLabellingsPerBlockWithTheSameBytesForAnyThreadCount) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
-  o.solver.auto_blocks_min_columns = 0;
+  o.solver.auto_rule.blocks_min_columns = 0;
   ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
     EXPECT_GT(r.stats.blocks, 1u);
     EXPECT_EQ(r.stats.solver_backend, "blocks");

@@ -60,8 +60,11 @@ const char* ClpStatusName(int status) {
 
 }  // namespace
 
-LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
-                          const LabelingOptions& options, const RunContext& ctx) {
+LpSolution SolveLpWithClp(const LpModel& lp,
+                          ClpAlgorithm algorithm,
+                          const ClpOptions& options,
+                          double time_limit_seconds,
+                          const RunContext& ctx) {
   const int num_cols = static_cast<int>(lp.NumColumns());
   LpSolution solution;
   if (num_cols == 0) {
@@ -76,18 +79,17 @@ LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
   model.messageHandler()->setLogLevel(0);
   model.loadProblem(coin.matrix, coin.col_lower.data(), coin.col_upper.data(),
                     lp.objective.data(), coin.row_lower.data(), coin.row_upper.data());
-  model.setPrimalTolerance(options.clp_tolerance);
-  model.setDualTolerance(options.clp_tolerance);
+  model.setPrimalTolerance(options.tolerance);
+  model.setDualTolerance(options.tolerance);
   model.setOptimizationDirection(1.0);
 
   bool cancelled = false;
   bool timed_out = false;
-  const auto deadline =
-      options.time_limit_seconds > 0.0
-          ? std::chrono::steady_clock::now() +
-                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                    std::chrono::duration<double>(options.time_limit_seconds))
-          : std::chrono::steady_clock::time_point::max();
+  const auto deadline = time_limit_seconds > 0.0
+                            ? std::chrono::steady_clock::now() +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(time_limit_seconds))
+                            : std::chrono::steady_clock::time_point::max();
   StopHandler handler(&ctx, deadline, &cancelled, &timed_out);
   model.passInEventHandler(&handler);
 
@@ -101,7 +103,7 @@ LpSolution SolveLpWithClp(const LpModel& lp, ClpAlgorithm algorithm,
   LINESURF_THROW_IF(timed_out,
                     kSolverFailed,
                     kClpBackendStage,
-                    "Clp stopped at the time limit of " << options.time_limit_seconds << " s");
+                    "Clp stopped at the time limit of " << time_limit_seconds << " s");
   LINESURF_THROW_IF(!model.isProvenOptimal(),
                     kSolverFailed,
                     kClpBackendStage,

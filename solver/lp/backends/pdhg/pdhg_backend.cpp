@@ -237,10 +237,11 @@ double Merit(const KktErrors& e, double omega) {
 
 class Pdhg {
  public:
-  Pdhg(const LpModel& lp, const LabelingOptions& options, const RunContext& ctx)
+  Pdhg(const LpModel& lp, const PdhgOptions& options, const RunContext& ctx)
       : lp_(lp), options_(options), ctx_(ctx), s_(Scale(lp)) {}
 
-  LpSolution Run() {
+  /// time_limit_seconds: 0 = none.
+  LpSolution Run(double time_limit_seconds) {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
     std::vector<double> x(n), y(m, 0.0), ax(m), aty(n, 0.0);
@@ -256,12 +257,12 @@ class Pdhg {
     double omega = cost_norm > 0.0 && bound_norm > 0.0 ? cost_norm / bound_norm : 1.0;
     const double c_norm = Norm2(lp_.objective);
     const double b_norm = BoundNorm(lp_.row_lower, lp_.row_upper);
-    const double eps = options_.pdhg_tolerance;
+    const double eps = options_.tolerance;
 
     std::int64_t since_restart = 0;
     double merit_at_restart = -1.0;
     double last_candidate_merit = std::numeric_limits<double>::infinity();
-    for (std::int64_t it = 1; it <= options_.pdhg_max_iterations; ++it) {
+    for (std::int64_t it = 1; it <= options_.max_iterations; ++it) {
       const double tau = kStepSize / omega, sigma = kStepSize * omega;
       // Primal step: x+ = proj(x - tau (c - A^T y)).
       ForChunks(n, [&](std::size_t b, std::size_t e) {
@@ -288,15 +289,15 @@ class Pdhg {
       // Cancellation is polled every iteration (one iteration of a large LP takes 50-150 ms).
       LINESURF_THROW_IF(
           ctx_.ShouldStop(), kCancelled, kPdhgBackendStage, "pdhg cancelled by the host");
-      if (it % kRestartCheckPeriod != 0 && it != options_.pdhg_max_iterations) continue;
+      if (it % kRestartCheckPeriod != 0 && it != options_.max_iterations) continue;
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      LINESURF_THROW_IF(options_.time_limit_seconds > 0.0 && elapsed > options_.time_limit_seconds,
+      LINESURF_THROW_IF(time_limit_seconds > 0.0 && elapsed > time_limit_seconds,
                         kSolverFailed,
                         kPdhgBackendStage,
-                        "pdhg stopped at the time limit of " << options_.time_limit_seconds
-                                                             << " s after " << it << " iterations");
+                        "pdhg stopped at the time limit of " << time_limit_seconds << " s after "
+                                                             << it << " iterations");
       const double inv = 1.0 / static_cast<double>(since_restart);
       ForChunks(n, [&](std::size_t b, std::size_t e) {
         for (std::size_t j = b; j < e; ++j) {
@@ -347,9 +348,8 @@ class Pdhg {
     }
     ThrowError(ErrorCode::kSolverFailed,
                kPdhgBackendStage,
-               "pdhg reached the iteration limit of " +
-                   std::to_string(options_.pdhg_max_iterations) + " without meeting tolerance " +
-                   std::to_string(eps));
+               "pdhg reached the iteration limit of " + std::to_string(options_.max_iterations) +
+                   " without meeting tolerance " + std::to_string(eps));
   }
 
  private:
@@ -370,20 +370,22 @@ class Pdhg {
       solution.row_duals[r] = y_scaled[r] * s_.row_scale[r];
     }
     solution.objective = lp_.Evaluate(solution.columns);
-    solution.status = "optimal (tolerance " + std::to_string(options_.pdhg_tolerance) + ")";
+    solution.status = "optimal (tolerance " + std::to_string(options_.tolerance) + ")";
     solution.iterations = iterations;
     return solution;
   }
 
   const LpModel& lp_;
-  const LabelingOptions& options_;
+  const PdhgOptions& options_;
   const RunContext& ctx_;
   ScaledLp s_;
 };
 
 }  // namespace
 
-LpSolution SolveLpWithPdhg(const LpModel& lp, const LabelingOptions& options,
+LpSolution SolveLpWithPdhg(const LpModel& lp,
+                           const PdhgOptions& options,
+                           double time_limit_seconds,
                            const RunContext& ctx) {
   if (lp.NumColumns() == 0) {
     LpSolution solution;
@@ -391,7 +393,7 @@ LpSolution SolveLpWithPdhg(const LpModel& lp, const LabelingOptions& options,
     solution.status = "optimal";
     return solution;
   }
-  return RunInArena(ctx, [&] { return Pdhg(lp, options, ctx).Run(); });
+  return RunInArena(ctx, [&] { return Pdhg(lp, options, ctx).Run(time_limit_seconds); });
 }
 
 }  // namespace linesurf::solver

@@ -6,16 +6,18 @@
 // every reduction sums fixed-chunk partials in order, so results do not depend on thread count.
 
 #include "engine/core/run_context.h"
-#include "solver/lp/lp_backend.h"
+#include "solver/lp/labeling_options.h"
 #include "solver/lp/lp_model.h"
 #include "solver/lp/lp_solution.h"
 
 namespace linesurf::solver {
 
 /// Stops when relative primal residual, dual residual and duality gap are all below
-/// options.pdhg_tolerance; throws kSolverFailed at options.pdhg_max_iterations or the time limit,
-/// kCancelled when ctx.ShouldStop() (polled every iteration).
-[[nodiscard]] LpSolution SolveLpWithPdhg(const LpModel& lp, const LabelingOptions& options,
+/// options.tolerance; throws kSolverFailed at options.max_iterations or at time_limit_seconds
+/// (0 = none), kCancelled when ctx.ShouldStop() (polled every iteration).
+[[nodiscard]] LpSolution SolveLpWithPdhg(const LpModel& lp,
+                                         const PdhgOptions& options,
+                                         double time_limit_seconds,
                                          const RunContext& ctx);
 
 }  // namespace linesurf::solver

@@ -153,10 +153,11 @@ struct Point {
 
 class EnergyPdhg {
  public:
-  EnergyPdhg(const ReducedEnergy& energy, const LabelingOptions& options, const RunContext& ctx)
+  EnergyPdhg(const ReducedEnergy& energy, const PdhgEnergyOptions& options, const RunContext& ctx)
       : energy_(energy), options_(options), ctx_(ctx), p_(BuildSaddle(energy)) {}
 
-  LpSolution Run() {
+  /// time_limit_seconds: 0 = none.
+  LpSolution Run(double time_limit_seconds) {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = p_.num_cols, m = p_.num_rows;
     // Preconditioned steps (Pock & Chambolle 2011, alpha = 1) for the multipliers scaled to
@@ -198,9 +199,9 @@ class EnergyPdhg {
     best_dual_ = -std::numeric_limits<double>::infinity();
     best_x_ = anchor.x;
 
-    for (std::int64_t it = 1; it <= options_.pdhg_max_iterations; ++it) {
+    for (std::int64_t it = 1; it <= options_.max_iterations; ++it) {
       // T's point is read only at the checks: between them it is not stored.
-      const bool check = it % kRestartCheckPeriod == 0 || it == options_.pdhg_max_iterations;
+      const bool check = it % kRestartCheckPeriod == 0 || it == options_.max_iterations;
       Iterate(z_y, anchor, since_restart, weight, check, step, reflected);
       ++since_restart;
       LINESURF_THROW_IF(
@@ -209,11 +210,11 @@ class EnergyPdhg {
 
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      LINESURF_THROW_IF(options_.time_limit_seconds > 0.0 && elapsed > options_.time_limit_seconds,
+      LINESURF_THROW_IF(time_limit_seconds > 0.0 && elapsed > time_limit_seconds,
                         kSolverFailed,
                         kPdhgEnergyStage,
                         "pdhg-energy stopped at the time limit of "
-                            << options_.time_limit_seconds << " s after " << it << " iterations");
+                            << time_limit_seconds << " s after " << it << " iterations");
       // The merit is the duality gap at the step's point (feasible; both sets are bounded, so the
       // gap is finite).
       const double gap = Gap(step);
@@ -239,9 +240,9 @@ class EnergyPdhg {
     ThrowError(ErrorCode::kSolverFailed,
                kPdhgEnergyStage,
                "pdhg-energy reached its iteration limit of " +
-                   std::to_string(options_.pdhg_max_iterations) + " with the gap " +
+                   std::to_string(options_.max_iterations) + " with the gap " +
                    std::to_string(best_primal_ - best_dual_) + " above tolerance " +
-                   std::to_string(options_.pdhg_energy_tolerance));
+                   std::to_string(options_.tolerance));
   }
 
  private:
@@ -345,8 +346,7 @@ class EnergyPdhg {
   }
 
   [[nodiscard]] bool Converged() const {
-    return best_primal_ - best_dual_ <=
-           options_.pdhg_energy_tolerance * std::max(1.0, std::abs(best_primal_));
+    return best_primal_ - best_dual_ <= options_.tolerance * std::max(1.0, std::abs(best_primal_));
   }
 
   LpSolution Solution(std::int64_t iterations) const {
@@ -360,12 +360,12 @@ class EnergyPdhg {
     s.objective = best_primal_;
     s.lower_bound = best_dual_;
     s.iterations = iterations;
-    s.status = "optimal (tolerance " + std::to_string(options_.pdhg_energy_tolerance) + ")";
+    s.status = "optimal (tolerance " + std::to_string(options_.tolerance) + ")";
     return s;
   }
 
   const ReducedEnergy& energy_;
-  const LabelingOptions& options_;
+  const PdhgEnergyOptions& options_;
   const RunContext& ctx_;
   SaddleProblem p_;
   // A row's step with that many entries, before its weight (0: none); each column's step.
@@ -380,9 +380,10 @@ class EnergyPdhg {
 }  // namespace
 
 LpSolution SolveEnergyWithPdhg(const ReducedEnergy& energy,
-                               const LabelingOptions& options,
+                               const PdhgEnergyOptions& options,
+                               double time_limit_seconds,
                                const RunContext& ctx) {
-  return RunInArena(ctx, [&] { return EnergyPdhg(energy, options, ctx).Run(); });
+  return RunInArena(ctx, [&] { return EnergyPdhg(energy, options, ctx).Run(time_limit_seconds); });
 }
 
 }  // namespace linesurf::solver

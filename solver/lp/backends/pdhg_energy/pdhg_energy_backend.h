@@ -16,7 +16,7 @@
 /// every y proves the lower bound
 ///   D(y) = constant + b.y + sum_j min(0, u_j + (K^T y)_j)
 /// of the relaxation (and so of the integral optimum). Stops when the best primal value and the
-/// best bound are within LabelingOptions::pdhg_energy_tolerance (relative).
+/// best bound are within PdhgEnergyOptions::tolerance (relative).
 ///
 /// Against "pdhg" on the LP (build_lp.h), the same relaxation has one variable per free cell
 /// instead of one per cell and term, and one multiplier per term instead of two rows.
@@ -24,17 +24,18 @@
 
 #include "engine/core/run_context.h"
 #include "solver/energy/build_lp.h"
-#include "solver/lp/lp_backend.h"
+#include "solver/lp/labeling_options.h"
 #include "solver/lp/lp_solution.h"
 
 namespace linesurf::solver {
 
 /// @return columns = the free cells' values (the best primal point found), objective = its
 /// energy, lower_bound = the best D(y), status "optimal (tolerance T)".
-/// Throws kSolverFailed at options.pdhg_max_iterations or options.time_limit_seconds, kCancelled
-/// when ctx.ShouldStop() (polled every iteration).
+/// Throws kSolverFailed at options.max_iterations or at time_limit_seconds (0 = none),
+/// kCancelled when ctx.ShouldStop() (polled every iteration).
 [[nodiscard]] LpSolution SolveEnergyWithPdhg(const ReducedEnergy& energy,
-                                             const LabelingOptions& options,
+                                             const PdhgEnergyOptions& options,
+                                             double time_limit_seconds,
                                              const RunContext& ctx);
 
 }  // namespace linesurf::solver

@@ -16,7 +16,7 @@ TEST(PdhgEnergy, BoundStaysBelowAWeightThatIsNotAFloat) {
   const CellId a = e.AddCell(1.0, 0.0);
   const CellId b = e.AddCell(0.0, 1.0);
   e.AddPair(a, b, 0.1);
-  const LpSolution s = SolveEnergyWithPdhg(ReduceEnergy(e), LabelingOptions{}, RunContext{});
+  const LpSolution s = SolveEnergyWithPdhg(ReduceEnergy(e), PdhgEnergyOptions{}, 0.0, RunContext{});
   EXPECT_NEAR(s.objective, 0.1, 1e-12);
   EXPECT_LE(s.lower_bound, 0.1);  // exactly: no tolerance
   EXPECT_GT(s.lower_bound, 0.1 - 1e-6);
@@ -39,8 +39,9 @@ TEST(PdhgEnergy, IteratesDoNotDependOnTheUnitsOfTheCosts) {
   for (double& w : scaled.structural_weights) w *= kScale;
   for (double& w : scaled.parity_weights) w *= kScale;
 
-  const LpSolution s = SolveEnergyWithPdhg(ReduceEnergy(e), LabelingOptions{}, RunContext{});
-  const LpSolution t = SolveEnergyWithPdhg(ReduceEnergy(scaled), LabelingOptions{}, RunContext{});
+  const LpSolution s = SolveEnergyWithPdhg(ReduceEnergy(e), PdhgEnergyOptions{}, 0.0, RunContext{});
+  const LpSolution t =
+      SolveEnergyWithPdhg(ReduceEnergy(scaled), PdhgEnergyOptions{}, 0.0, RunContext{});
   EXPECT_GT(s.iterations, 64);  // a solve that needs its restarts, not a trivial one
   EXPECT_EQ(s.iterations, t.iterations);
   EXPECT_EQ(s.columns, t.columns);
