@@ -13,7 +13,7 @@
 #include <string_view>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// Largest num_threads accepted (the CLI's -j bound too).
 inline constexpr int kMaxThreads = 256;
@@ -362,5 +362,5 @@ template <typename E>
   return OptionEnumFromName<ComplexEngine>(name);
 }
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

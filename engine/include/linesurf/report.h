@@ -12,7 +12,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// Options (by path, nested), counts, block and scene decisions, eps, solver, mesh, its
 /// validity (CheckMesh), quality figures when measured, peak memory and warnings.
@@ -26,5 +26,5 @@ inline namespace v1 {
 /// The figures without ground truth; components beyond the first 200 are counted, not listed.
 [[nodiscard]] LINESURF_API std::string ReportJson(const SurfaceQuality& quality);
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf
