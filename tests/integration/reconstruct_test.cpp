@@ -213,10 +213,12 @@ TEST(Reconstruct, OneBlockIsABlockSideCoveringTheBox) {
     o.blocks.one_block = true;
     const pipeline::ReconstructResult mono = RunReconstruct(s.scene, o);
     EXPECT_EQ(mono.stats.complex.blocks, 1u);
+    EXPECT_EQ(mono.stats.complex.engine, "monolithic");  // the partition the options asked for
     o.blocks.one_block = false;
     o.blocks.block_size = 1000.0;
     const pipeline::ReconstructResult blocks = RunReconstruct(s.scene, o);
     EXPECT_EQ(blocks.stats.complex.blocks, 1u);
+    EXPECT_EQ(blocks.stats.complex.engine, "blocks");
     EXPECT_FALSE(blocks.stats.complex.block_size_automatic);  // given: no figures of the size rule
     EXPECT_EQ(blocks.stats.complex.mean_segments_per_block, 0.0);
     EXPECT_EQ(blocks.stats.complex.mean_planes_per_block, 0.0);
