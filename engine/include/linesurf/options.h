@@ -199,7 +199,7 @@ struct ReconstructOptions {
   QualityOptions quality;
   /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines) when another component holds more;
-  /// counted in ReconstructStats::removed_fragments.
+  /// counted in ReconstructStats::fragments.
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;

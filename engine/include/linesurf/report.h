@@ -14,8 +14,10 @@
 namespace linesurf {
 inline namespace v2 {
 
-/// Options (by path, nested), counts, block and scene decisions, eps, solver, mesh, its
-/// validity (CheckMesh), quality figures when measured, peak memory and warnings.
+/// stats_version (the stats' layout_version), options (by path, nested), then each stage struct
+/// of the stats under the keys of linesurf 1's report: counts, block and scene decisions, eps,
+/// solver, mesh, quality figures when measured, stage times and peak memory; the mesh's validity
+/// (CheckMesh) and the warnings.
 [[nodiscard]] LINESURF_API std::string ReportJson(const ReconstructResult& result,
                                                   const ReconstructOptions& options);
 /// Options, detection stats and every plane's inlier count and length (plane i of `planes`).
