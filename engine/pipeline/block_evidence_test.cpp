@@ -7,6 +7,7 @@
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
 #include "partition/arrangement/cell_locator.h"
+#include "tests/support/one_complex_evidence.h"
 #include "tests/support/thread_count.h"
 
 #include <Eigen/Geometry>
@@ -168,7 +169,7 @@ BlocksAndMonolithic Energies(const Scene& scene, double block_size) {
   EXPECT_TRUE(mono);
   if (!mono) return out;
   out.mono = std::move(mono->complex);
-  auto m = ComputeEvidence(out.mono, scene, Options(), BoundaryMode::kExterior, {});
+  auto m = testing::ComputeOneComplexEvidence(out.mono, scene, Options(), BoundaryMode::kExterior, {});
   EXPECT_TRUE(m) << m.error().ToString();
   if (m) out.mono_energy = std::move(m).value();
   return out;

@@ -1,10 +1,10 @@
 #pragma once
 /// @file complex_regularisation.h
 /// @brief Internal to engine/pipeline: the edge and corner regularisation (Boulch et al. 2014,
-/// see compute_evidence.h) of the edges and vertices inside one complex.
+/// see evidence.h) of the edges and vertices inside one complex.
 
 #include "engine/core/cell_complex.h"
-#include "engine/pipeline/compute_evidence.h"
+#include "engine/pipeline/evidence.h"
 #include "solver/energy/energy_input.h"
 
 #include <cstddef>

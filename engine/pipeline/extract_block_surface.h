@@ -1,8 +1,20 @@
 #pragma once
 /// @file extract_block_surface.h
 /// @brief The stitch of the block engine (docs/design/block_engine.md, section 6): labels of the
-/// cells of all blocks -> one closed, outward-oriented, conforming 2-manifold surface, the same
-/// kind of result as ExtractSurface gives for one complex.
+/// cells of all blocks -> one closed, outward-oriented, conforming 2-manifold surface.
+///
+/// Within one complex: the surface is the set of facets whose two cells have different labels
+/// (the space outside the box has the label ExtractOptions::outside_full). Each face is oriented from the full to the
+/// empty cell (counter-clockwise seen from the empty side: normals point outwards). Vertices are
+/// shared by complex vertex (plane triple), never welded by coordinates. Where the full region
+/// pinches (two full cells meeting only along an edge or at a vertex) the surface is made a
+/// 2-manifold by splitting: around every complex vertex the faces are walked as umbrellas, two
+/// faces at an edge being joined when they bound the same run of full cells around it; each
+/// umbrella gets its own output vertex. Where an edge keeps several face pairs between the same
+/// two output vertices (both ends single umbrellas), every face pair of that edge gets a vertex
+/// of its own at the edge midpoint (all of them, also pairs whose ends are other umbrellas at the
+/// same points, so no midpoint lies on another face's edge: no T-junction). The result is closed,
+/// 2-manifold and consistently oriented by construction.
 ///
 /// Surface faces are the block facets between cells of different labels (interior facets, and
 /// scene-boundary facets against the outside, whose label is ExtractOptions::outside_full) and
@@ -13,15 +25,14 @@
 /// an edge on a block face (a seam vertex of the other side, a vertex of a neighbouring block on a
 /// block edge) is inserted into that edge in exact order, so there are no T-junctions. Faces
 /// around an edge are paired into manifold fans by the runs of full cells around it: from the
-/// block's edge star inside a block (as ExtractSurface does), by exact angular order around the
-/// edge on block faces. Then the back end of ExtractSurface (umbrella split, midpoints, output)
+/// block's edge star inside a block (as within one complex), by exact angular order around the
+/// edge on block faces. Then the back end (umbrella split, midpoints, output; surface_assembly.h)
 /// runs on the one surface.
 
 #include "linesurf/error.h"
 
 #include "engine/core/polygon_mesh.h"
 #include "engine/core/run_context.h"
-#include "engine/pipeline/extract_surface.h"
 #include "partition/arrangement/block_complexes.h"
 
 #include <cstdint>
@@ -30,6 +41,31 @@
 #include <vector>
 
 namespace linesurf::pipeline {
+
+struct ExtractOptions {
+  /// Label of the space outside the box: false (empty) for exterior scenes, true (full) for
+  /// interior scenes. Box facets join the surface only where a cell on the box differs from it.
+  bool outside_full = false;
+  /// Triangulate the convex faces: a fan from the first corner, or from an added centroid
+  /// vertex when a face has straight corners (vertices of neighbouring facets on its sides), so
+  /// no triangle is degenerate. Default false: convex polygons.
+  bool triangulate = false;
+  /// Block engine only (ExtractBlockSurface): faces of one plane (an input plane, or a block face
+  /// carrying seam facets), on the same side of it, that meet alone across an edge (on a block
+  /// face, or where a plane without surface there cuts them) are merged into one polygon where
+  /// the union is one simple polygon (it may then be non-convex, so not together with
+  /// `triangulate`). Default false: the facets of the blocks and seams.
+  bool merge_coplanar = false;
+};
+
+struct ExtractStats {
+  std::size_t surface_facets = 0;
+  /// Output vertices beyond one per complex vertex used (umbrella splits of pinched vertices,
+  /// edge midpoints).
+  std::size_t split_vertices = 0;
+  /// Complex edges with more than two surface facets (split into manifold pairs).
+  std::size_t non_manifold_edges = 0;
+};
 
 /// The facet an output face comes from: facet `facet` of block `owner`, or seam facet `facet` of
 /// BlockComplexes::seams[owner] (the first of the merged facets with merge_coplanar).
@@ -65,7 +101,7 @@ struct BlockExtractResult {
 /// with triangulate; kInternal on broken complexes.
 /// Deterministic for any ctx.num_threads: faces in block order (each block's facets in FacetId
 /// order, then the seam facets of the faces it is the lower block of), vertices in order of
-/// their first (block, vertex) occurrence. With one block the mesh is ExtractSurface's.
+/// their first (block, vertex) occurrence.
 [[nodiscard]] Expected<BlockExtractResult> ExtractBlockSurface(
     const partition::BlockComplexes& complexes,
     std::span<const std::uint8_t> labels,

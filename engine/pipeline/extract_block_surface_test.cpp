@@ -1,7 +1,7 @@
 #include "engine/pipeline/extract_block_surface.h"
 
 #include "engine/core/rng.h"
-#include "engine/pipeline/extract_surface.h"
+#include "tests/support/one_complex_surface.h"
 #include "engine/pipeline/mesh_index_topology.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
@@ -153,9 +153,9 @@ void ExpectSameMesh(const PolygonMesh& a, const PolygonMesh& b) {
   EXPECT_EQ(a.face_indices, b.face_indices);
 }
 
-// Must show 1, extraction half: one block gives exactly ExtractSurface's mesh on the monolithic
-// complex of the same box and planes.
-TEST(ExtractBlockSurface, OneBlockIsExtractSurfaceOfTheMonolithicComplex) {
+// One block gives exactly the one-complex extraction's mesh (tests/support/one_complex_surface.h)
+// on the complex of the same box and planes.
+TEST(ExtractBlockSurface, OneBlockIsTheSurfaceOfTheOneComplex) {
   const Box3 box{Vec3(-1.1, -0.9, -1), Vec3(1, 1.2, 0.8)};
   const std::vector<Plane3> planes = RandomPlanes(12, box, 1);
   const BlockComplexes cx = Build(box, 10.0, planes);
@@ -170,7 +170,7 @@ TEST(ExtractBlockSurface, OneBlockIsExtractSurfaceOfTheMonolithicComplex) {
         ExtractOptions options;
         options.triangulate = triangulate;
         options.outside_full = outside_full;
-        const Expected<ExtractResult> expected = ExtractSurface(mono->complex, labels, options);
+        const Expected<testing::ExtractResult> expected = testing::ExtractOneComplexSurface(mono->complex, labels, options);
         ASSERT_TRUE(expected);
         const BlockExtractResult r = Stitch(cx, labels, options);
         ExpectSameMesh(r.mesh, expected->mesh);
@@ -284,7 +284,7 @@ TEST(ExtractBlockSurface, EveryPlaneInEveryBlockGivesTheMonolithicSurface) {
       double volume = 0.0;
       const std::vector<std::uint8_t> labels = LabelCells(
           cx, [&](const Vec3& p) { return mono_labels[locator.Locate(p).index()] != 0; }, volume);
-      const Expected<ExtractResult> expected = ExtractSurface(mono->complex, mono_labels, {});
+      const Expected<testing::ExtractResult> expected = testing::ExtractOneComplexSurface(mono->complex, mono_labels, {});
       ASSERT_TRUE(expected);
       const BlockExtractResult r = Stitch(cx, labels);
       ExpectValidSurface(r.mesh, volume);

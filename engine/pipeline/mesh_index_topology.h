@@ -1,7 +1,7 @@
 #pragma once
 /// @file mesh_index_topology.h
 /// @brief Combinatorial checks of a polygon mesh by vertex index (no welding by coordinates):
-/// what ExtractSurface guarantees and RunStats reports. Geometric checks (self-intersection,
+/// what ExtractBlockSurface guarantees and RunStats reports. Geometric checks (self-intersection,
 /// welding coincident points) live in engine/pipeline/mesh_validity.h.
 
 #include <cstddef>

@@ -193,7 +193,7 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
                       kReconstructStage,
                       "no plane: nothing to reconstruct from");
     const Box3 box = SceneBox(scene, options.box_margin);
-    // The derived option bounds, before the complex (ComputeEvidence checks them again).
+    // The derived option bounds, before the complex (ComputeBlockEvidence checks them again).
     if (Status scale = CheckEnergyScale(scene, box, options.energy); !scale) {
       throw LinesurfException(scale.error());
     }

@@ -14,7 +14,7 @@
 #include "engine/core/scene.h"
 #include "engine/detect/detect_planes.h"
 #include "engine/pipeline/block_partition.h"
-#include "engine/pipeline/compute_evidence.h"
+#include "engine/pipeline/evidence.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/surface_quality.h"

@@ -1,15 +1,15 @@
 #pragma once
 /// @file segment_evidence.h
 /// @brief Internal to engine/pipeline: the integration of the segments' evidence (samples,
-/// textural and structural terms, sight rays, viewpoint prior; see compute_evidence.h) over the
-/// cells and facets of an EvidenceSpace, shared by ComputeEvidence (one complex) and
-/// ComputeBlockEvidence (blocks joined by seams). Sums are fixed-point integers, so the result
+/// textural and structural terms, sight rays, viewpoint prior; see evidence.h) over the cells
+/// and facets of an EvidenceSpace: the blocks joined by seams of ComputeBlockEvidence, or one
+/// complex (the tests' tests/support/one_complex_evidence.h). Sums are fixed-point integers, so the result
 /// does not depend on the thread count or the schedule.
 
 #include "engine/core/geometry.h"
 #include "engine/core/run_context.h"
 #include "engine/core/scene.h"
-#include "engine/pipeline/compute_evidence.h"
+#include "engine/pipeline/evidence.h"
 #include "solver/energy/energy_input.h"
 
 #include <array>

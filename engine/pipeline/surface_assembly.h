@@ -1,7 +1,7 @@
 #pragma once
 /// @file surface_assembly.h
-/// @brief The back end that ExtractSurface (one complex) and ExtractBlockSurface (block
-/// complexes and their seams) share: oriented surface cycles whose edges are paired into
+/// @brief The back end of ExtractBlockSurface (block complexes and their seams; the tests' one
+/// complex extraction, tests/support/one_complex_surface.h, uses it too): oriented surface cycles whose edges are paired into
 /// manifold fans -> output vertices per umbrella, midpoints on edges that would be shared by
 /// several face pairs, optional triangulation, the mesh in face order.
 

@@ -29,6 +29,7 @@
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/reconstruct.h"
 #include "engine/pipeline/scene_box.h"
+#include "tests/support/one_complex_evidence.h"
 #include "solver/lp/lp_backend.h"
 #include "tests/support/random_energy.h"
 #include "tests/bench/crop_scene.h"
@@ -254,7 +255,7 @@ int SceneStudy(const char* path,
   const double complex_seconds = Seconds(complex_start);
   const auto evidence_start = std::chrono::steady_clock::now();
   const bool interior = pipeline::DecideSceneMode(scene).interior;
-  const pipeline::EvidenceResult evidence = Take(pipeline::ComputeEvidence(
+  const pipeline::EvidenceResult evidence = Take(pipeline::testing::ComputeOneComplexEvidence(
       built.complex,
       scene,
       o.energy,

@@ -1,7 +1,8 @@
 #pragma once
-/// @file compute_evidence.h
-/// @brief Evidence of the line segments on the cells of one complex: the energy terms of
-/// DESIGN 2.3 as a solver::EnergyInput (see docs/design/reconstruction.md).
+/// @file evidence.h
+/// @brief The evidence of the line segments on the cells: the energy terms of the paper as a
+/// solver::EnergyInput, their options, scale rules and result (ComputeBlockEvidence,
+/// block_evidence.h, computes them; see docs/design/reconstruction.md).
 ///
 /// Every segment contributes per unit of its length, divided by the scale sigma. The segment is
 /// integrated with K midpoint samples (K = ceil(samples_per_sigma * length / sigma), clamped to
@@ -47,7 +48,7 @@ struct EnergyOptions {
   /// CreaseWeight's default for the boundary mode.
   EnergyWeights weights;
   /// Scale sigma (scene units, > 0, at least 1e-9 of the box diagonal, and large enough that
-  /// the total evidence weight x length / sigma x views stays below 2^31: ComputeEvidence
+  /// the total evidence weight x length / sigma x views stays below 2^31: ComputeBlockEvidence
   /// checks both). Unset: the median segment length of the scene (about 1 m on Andalusian,
   /// where the reference uses 1), so weights mean the same at any scene scale.
   std::optional<double> sigma;
@@ -70,7 +71,7 @@ struct EnergyOptions {
 /// The bounds options alone cannot state (kInvalidOptions): sigma (given, or the default) at
 /// least 1e-9 of the diagonal of `box`, and the total evidence (weight x length / sigma x views,
 /// summed over the segments) within what the fixed-point accumulators hold (2^31), so no cost
-/// wraps or overflows. ComputeEvidence checks it; Reconstruct checks it before the complex.
+/// wraps or overflows. ComputeBlockEvidence checks it; Reconstruct checks it before the complex.
 [[nodiscard]] Status CheckEnergyScale(const Scene& scene,
                                       const Box3& box,
                                       const EnergyOptions& options);
@@ -120,16 +121,5 @@ struct EvidenceResult {
 /// The scale used when EnergyOptions::sigma is unset: the median segment length (1 when the
 /// scene has no segment of positive length).
 [[nodiscard]] double DefaultSigma(const Scene& scene);
-
-/// @brief Builds the energy over the cells of `complex` from the segments, planes, memberships
-/// and viewpoints of `scene` (local frame, the complex's frame).
-/// @param boundary fixes the cells with a facet on the box (see BoundaryMode).
-/// @return kInvalidOptions, kInvalidInput (memberships size or plane ids out of range),
-/// kCancelled. Runs in an arena of ctx.num_threads; bit-identical for any thread count.
-[[nodiscard]] Expected<EvidenceResult> ComputeEvidence(const CellComplex& complex,
-                                                       const Scene& scene,
-                                                       const EnergyOptions& options,
-                                                       BoundaryMode boundary,
-                                                       const RunContext& ctx) noexcept;
 
 }  // namespace linesurf::pipeline

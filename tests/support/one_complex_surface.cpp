@@ -1,11 +1,11 @@
-#include "engine/pipeline/extract_surface.h"
+#include "tests/support/one_complex_surface.h"
 
 #include "engine/core/exception.h"
 #include "engine/pipeline/surface_assembly.h"
 
 #include <vector>
 
-namespace linesurf::pipeline {
+namespace linesurf::pipeline::testing {
 namespace {
 
 constexpr const char* kExtractSurfaceStage = "extract_surface";
@@ -43,9 +43,9 @@ SurfaceCycles CollectSurfaceFaces(const CellComplex& cx,
 
 }  // namespace
 
-Expected<ExtractResult> ExtractSurface(const CellComplex& cx,
-                                       std::span<const std::uint8_t> labels,
-                                       const ExtractOptions& options) noexcept {
+Expected<ExtractResult> ExtractOneComplexSurface(const CellComplex& cx,
+                                                 std::span<const std::uint8_t> labels,
+                                                 const ExtractOptions& options) noexcept {
   return CatchAll(kExtractSurfaceStage, [&]() -> ExtractResult {
     LINESURF_THROW_IF(
         labels.size() != cx.NumCells(),
@@ -75,4 +75,4 @@ Expected<ExtractResult> ExtractSurface(const CellComplex& cx,
   });
 }
 
-}  // namespace linesurf::pipeline
+}  // namespace linesurf::pipeline::testing

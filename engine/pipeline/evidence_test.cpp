@@ -1,4 +1,4 @@
-#include "engine/pipeline/compute_evidence.h"
+#include "engine/pipeline/evidence.h"
 
 #include <gtest/gtest.h>
 
@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tests/support/grid_complex.h"
+#include "tests/support/one_complex_evidence.h"
 #include "tests/support/thread_count.h"
 
 namespace linesurf::pipeline {
@@ -42,7 +43,7 @@ EvidenceResult Compute(const GridComplexForTest& g, const Scene& scene, const En
                        int threads = 1) {
   RunContext ctx;
   ctx.num_threads = threads;
-  auto r = ComputeEvidence(g.complex(), scene, o, BoundaryMode::kNone, ctx);
+  auto r = testing::ComputeOneComplexEvidence(g.complex(), scene, o, BoundaryMode::kNone, ctx);
   EXPECT_TRUE(r.has_value()) << (r ? "" : r.error().ToString());
   return r ? std::move(r.value()) : EvidenceResult{};
 }
@@ -55,7 +56,7 @@ double PairWeight(const solver::EnergyInput& e, CellId a, CellId b) {
   return w;
 }
 
-TEST(ComputeEvidence, TexturalSegmentPenalisesTheCellBehindIt) {
+TEST(OneComplexEvidence, TexturalSegmentPenalisesTheCellBehindIt) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene = OneSegmentScene({Vec3(2, 1.2, 1.5), Vec3(2, 1.8, 1.5)},
                                       {Plane3{Vec3(2, 0, 0), Vec3::UnitX()}}, Vec3(0.5, 1.5, 1.5));
@@ -74,7 +75,7 @@ TEST(ComputeEvidence, TexturalSegmentPenalisesTheCellBehindIt) {
   EXPECT_EQ(r.stats.segments_with_planes[1], 1u);
 }
 
-TEST(ComputeEvidence, ViewpointOnTheOtherSideFlipsTheBehindCell) {
+TEST(OneComplexEvidence, ViewpointOnTheOtherSideFlipsTheBehindCell) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene = OneSegmentScene({Vec3(2, 1.2, 1.5), Vec3(2, 1.8, 1.5)},
                                       {Plane3{Vec3(2, 0, 0), Vec3::UnitX()}}, Vec3(3.5, 1.5, 1.5));
@@ -83,7 +84,7 @@ TEST(ComputeEvidence, ViewpointOnTheOtherSideFlipsTheBehindCell) {
   EXPECT_NEAR(PairWeight(r.energy, g.Cell(3, 1, 1), g.Cell(2, 1, 1)), 0.6, 1e-6);
 }
 
-TEST(ComputeEvidence, StructuralSegmentGroupsTheCellsNotFacingTheView) {
+TEST(OneComplexEvidence, StructuralSegmentGroupsTheCellsNotFacingTheView) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene = OneSegmentScene(
       {Vec3(2, 2, 1.2), Vec3(2, 2, 1.8)},
@@ -109,7 +110,7 @@ TEST(ComputeEvidence, StructuralSegmentGroupsTheCellsNotFacingTheView) {
   EXPECT_NEAR(total, 1.2, 1e-6);
 }
 
-TEST(ComputeEvidence, CreaseTermChargesOnlyTheFlatLabellingsThroughTheSegment) {
+TEST(OneComplexEvidence, CreaseTermChargesOnlyTheFlatLabellingsThroughTheSegment) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene =
       OneSegmentScene({Vec3(2, 2, 1.2), Vec3(2, 2, 1.8)},
@@ -137,7 +138,7 @@ TEST(ComputeEvidence, CreaseTermChargesOnlyTheFlatLabellingsThroughTheSegment) {
   }
 }
 
-TEST(ComputeEvidence, CreaseWeightDefaultsByTheBoundary) {
+TEST(OneComplexEvidence, CreaseWeightDefaultsByTheBoundary) {
   EnergyOptions o;
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kInterior), kInteriorCreaseWeight);
   EXPECT_EQ(CreaseWeight(o, BoundaryMode::kExterior), 0.0);
@@ -148,7 +149,7 @@ TEST(ComputeEvidence, CreaseWeightDefaultsByTheBoundary) {
   EXPECT_FALSE(o.Validate());
 }
 
-TEST(ComputeEvidence, SegmentsWithoutPlanesStillGiveVisibility) {
+TEST(OneComplexEvidence, SegmentsWithoutPlanesStillGiveVisibility) {
   const GridComplexForTest g(4, 4, 4);
   const Scene scene =
       OneSegmentScene({Vec3(2.5, 1.2, 1.5), Vec3(2.5, 1.8, 1.5)}, {}, Vec3(0.5, 1.5, 1.5));
@@ -159,7 +160,7 @@ TEST(ComputeEvidence, SegmentsWithoutPlanesStillGiveVisibility) {
   EXPECT_EQ(r.stats.segments_with_planes[0], 1u);
 }
 
-TEST(ComputeEvidence, RegularisationAndBoundary) {
+TEST(OneComplexEvidence, RegularisationAndBoundary) {
   const GridComplexForTest g(3, 3, 3);
   Scene scene;
   scene.observations.Clear();
@@ -167,7 +168,7 @@ TEST(ComputeEvidence, RegularisationAndBoundary) {
   o.weights.edge = 0.5;
   o.weights.corner = 0.25;
   RunContext ctx;
-  auto r = ComputeEvidence(g.complex(), scene, o, BoundaryMode::kExterior, ctx);
+  auto r = testing::ComputeOneComplexEvidence(g.complex(), scene, o, BoundaryMode::kExterior, ctx);
   ASSERT_TRUE(r.has_value()) << r.error().ToString();
   // Interior edges of a 3x3x3 grid: 3 axes x 3 segments x 2x2 lines = 36; interior vertices: 8.
   EXPECT_EQ(r->energy.NumParityGroups(), 36u + 8u);
@@ -182,7 +183,7 @@ TEST(ComputeEvidence, RegularisationAndBoundary) {
   EXPECT_TRUE(r->energy.Validate().has_value());
 }
 
-TEST(ComputeEvidence, IdenticalForAnyThreadCount) {
+TEST(OneComplexEvidence, IdenticalForAnyThreadCount) {
   const GridComplexForTest g(6, 6, 6);
   Scene scene;
   for (int i = 0; i < 300; ++i) {

@@ -1,4 +1,4 @@
-#include "engine/pipeline/extract_surface.h"
+#include "tests/support/one_complex_surface.h"
 
 #include "engine/core/rng.h"
 #include "tests/support/grid_complex.h"
@@ -13,6 +13,7 @@
 namespace linesurf::pipeline {
 namespace {
 
+using testing::ExtractResult;
 using testing::GridComplexForTest;
 
 std::vector<std::uint8_t> Labels(const GridComplexForTest& g,
@@ -25,7 +26,7 @@ std::vector<std::uint8_t> Labels(const GridComplexForTest& g,
 ExtractResult Extract(const GridComplexForTest& g,
                       const std::vector<std::uint8_t>& labels,
                       ExtractOptions options = {}) {
-  auto result = ExtractSurface(g.complex(), labels, options);
+  auto result = testing::ExtractOneComplexSurface(g.complex(), labels, options);
   EXPECT_TRUE(result.has_value()) << (result ? "" : result.error().ToString());
   return result ? std::move(result.value()) : ExtractResult{};
 }
@@ -37,7 +38,7 @@ void ExpectClosedManifold(const PolygonMesh& mesh, double volume) {
   EXPECT_NEAR(t.signed_volume, volume, 1e-9);
 }
 
-TEST(ExtractSurface, SingleCellIsAnOutwardCube) {
+TEST(OneComplexSurface, SingleCellIsAnOutwardCube) {
   const GridComplexForTest g(3, 3, 3);
   const ExtractResult r = Extract(g, Labels(g, {{1, 1, 1}}));
   EXPECT_EQ(r.mesh.NumFaces(), 6u);
@@ -46,7 +47,7 @@ TEST(ExtractSurface, SingleCellIsAnOutwardCube) {
   ExpectClosedManifold(r.mesh, 1.0);
 }
 
-TEST(ExtractSurface, CellsTouchingAlongAnEdgeAreSplit) {
+TEST(OneComplexSurface, CellsTouchingAlongAnEdgeAreSplit) {
   const GridComplexForTest g(4, 4, 3);
   const ExtractResult r = Extract(g, Labels(g, {{1, 1, 1}, {2, 2, 1}}));
   EXPECT_EQ(r.mesh.NumFaces(), 12u);
@@ -56,7 +57,7 @@ TEST(ExtractSurface, CellsTouchingAlongAnEdgeAreSplit) {
   ExpectClosedManifold(r.mesh, 2.0);
 }
 
-TEST(ExtractSurface, CellsTouchingAtAVertexAreSplit) {
+TEST(OneComplexSurface, CellsTouchingAtAVertexAreSplit) {
   const GridComplexForTest g(4, 4, 4);
   const ExtractResult r = Extract(g, Labels(g, {{1, 1, 1}, {2, 2, 2}}));
   EXPECT_EQ(r.mesh.vertices.size(), 16u);
@@ -64,7 +65,7 @@ TEST(ExtractSurface, CellsTouchingAtAVertexAreSplit) {
   ExpectClosedManifold(r.mesh, 2.0);
 }
 
-TEST(ExtractSurface, PinchedEdgeInsideOneUmbrellaIsCut) {
+TEST(OneComplexSurface, PinchedEdgeInsideOneUmbrellaIsCut) {
   // A and B meet only along the edge x = y = 2, z in [1, 2], but are joined below it through
   // three cells of the layer z = 0, so one umbrella at (2, 2, 1) passes twice through that edge.
   const GridComplexForTest g(4, 4, 3);
@@ -73,7 +74,7 @@ TEST(ExtractSurface, PinchedEdgeInsideOneUmbrellaIsCut) {
   ExpectClosedManifold(r.mesh, 5.0);
 }
 
-TEST(ExtractSurface, EdgeShrinkingToOneUmbrellaAtBothEndsGetsAMidpoint) {
+TEST(OneComplexSurface, EdgeShrinkingToOneUmbrellaAtBothEndsGetsAMidpoint) {
   // As above, with a second bridge above the edge: both ends of the edge keep one umbrella, so
   // each of the two face pairs along it gets its own midpoint vertex (both: a midpoint in one
   // pair only would lie on the straight edge of the other pair's faces, a T-junction).
@@ -104,7 +105,7 @@ TEST(ExtractSurface, EdgeShrinkingToOneUmbrellaAtBothEndsGetsAMidpoint) {
   ExpectClosedManifold(r.mesh, 8.0);
 }
 
-TEST(ExtractSurface, RandomLabelsGiveClosedManifolds) {
+TEST(OneComplexSurface, RandomLabelsGiveClosedManifolds) {
   const GridComplexForTest g(6, 5, 5);
   for (std::uint64_t trial = 0; trial < 40; ++trial) {
     Rng rng(MixSeed(trial, RngStage::kEvidence, 7));
@@ -130,7 +131,7 @@ TEST(ExtractSurface, RandomLabelsGiveClosedManifolds) {
   }
 }
 
-TEST(ExtractSurface, CheckerboardIsClosedAndManifold) {
+TEST(OneComplexSurface, CheckerboardIsClosedAndManifold) {
   const GridComplexForTest g(6, 6, 6);
   std::vector<std::uint8_t> labels(g.complex().NumCells(), 0);
   double volume = 0.0;
@@ -148,7 +149,7 @@ TEST(ExtractSurface, CheckerboardIsClosedAndManifold) {
   ExpectClosedManifold(r.mesh, volume);
 }
 
-TEST(ExtractSurface, InteriorSceneFacesPointIntoTheEmptyRoom) {
+TEST(OneComplexSurface, InteriorSceneFacesPointIntoTheEmptyRoom) {
   const GridComplexForTest g(3, 3, 3);
   std::vector<std::uint8_t> labels(g.complex().NumCells(), 1);
   labels[g.Cell(1, 1, 1).index()] = 0;
@@ -159,7 +160,7 @@ TEST(ExtractSurface, InteriorSceneFacesPointIntoTheEmptyRoom) {
   ExpectClosedManifold(r.mesh, -1.0);
 }
 
-TEST(ExtractSurface, FullCellsOnTheBoxCloseAgainstTheBox) {
+TEST(OneComplexSurface, FullCellsOnTheBoxCloseAgainstTheBox) {
   const GridComplexForTest g(2, 2, 2);
   std::vector<std::uint8_t> labels(g.complex().NumCells(), 1);
   const ExtractResult r = Extract(g, labels);
@@ -167,7 +168,7 @@ TEST(ExtractSurface, FullCellsOnTheBoxCloseAgainstTheBox) {
   ExpectClosedManifold(r.mesh, 8.0);
 }
 
-TEST(ExtractSurface, TriangulatedFacesAreNotDegenerate) {
+TEST(OneComplexSurface, TriangulatedFacesAreNotDegenerate) {
   const GridComplexForTest g(4, 3, 3);
   ExtractOptions tri;
   tri.triangulate = true;
@@ -181,10 +182,10 @@ TEST(ExtractSurface, TriangulatedFacesAreNotDegenerate) {
   }
 }
 
-TEST(ExtractSurface, RejectsWrongLabelCount) {
+TEST(OneComplexSurface, RejectsWrongLabelCount) {
   const GridComplexForTest g(2, 2, 2);
   const std::vector<std::uint8_t> labels(3, 0);
-  const auto r = ExtractSurface(g.complex(), labels, {});
+  const auto r = testing::ExtractOneComplexSurface(g.complex(), labels, {});
   ASSERT_FALSE(r.has_value());
   EXPECT_EQ(r.error().code, ErrorCode::kInvalidInput);
 }
