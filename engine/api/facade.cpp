@@ -17,7 +17,7 @@
 #include "engine/pipeline/sanitize_scene.h"
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 namespace {
 
 /// ValueOrThrow for a check of what goes into `path`: the error names the file.
@@ -96,10 +96,8 @@ Expected<ReconstructResult> Reconstruct(const InputScene& scene,
     ThrowIfInvalid(options.Validate());
     const Scene engine_scene = ValueOrThrow(api::ToEngineScene(scene));
     const api::HostContext host(control, options.num_threads);
-    return api::ToPublicResult(
-        ValueOrThrow(
-            pipeline::Reconstruct(engine_scene, api::ToEngineOptions(options), host.Context())),
-        options);
+    return api::ToPublicResult(ValueOrThrow(
+        pipeline::Reconstruct(engine_scene, api::ToEngineOptions(options), host.Context())));
   });
 }
 
@@ -157,8 +155,7 @@ Expected<ReconstructResult> Reconstruction::Solve(const EnergyWeights& weights,
     engine_options.energy.weights = weights;
     const api::HostContext host(control, impl_->options.num_threads);
     return api::ToPublicResult(
-        ValueOrThrow(pipeline::SolvePrepared(impl_->prepared, engine_options, host.Context())),
-        impl_->options);
+        ValueOrThrow(pipeline::SolvePrepared(impl_->prepared, engine_options, host.Context())));
   });
 }
 
@@ -252,5 +249,5 @@ bool IsCityJsonSeqPath(const std::string& path) noexcept {
   return IsPathOf(path, [](const std::string& p) { return io::IsCityJsonSeqPath(p); });
 }
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

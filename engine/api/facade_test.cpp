@@ -415,17 +415,17 @@ TEST(FacadeReconstruct, HouseEqualsThePipeline) {
   }
   EXPECT_EQ(m.face_offsets, engine->mesh.face_offsets);
   EXPECT_EQ(m.face_indices, engine->mesh.face_indices);
-  EXPECT_TRUE(facade->stats.mesh_closed);
-  EXPECT_TRUE(facade->stats.mesh_manifold);
-  EXPECT_EQ(facade->stats.cells, engine->stats.cells);
+  EXPECT_TRUE(facade->stats.surface.mesh_closed);
+  EXPECT_TRUE(facade->stats.surface.mesh_manifold);
+  EXPECT_EQ(facade->stats.complex.cells, engine->stats.complex.cells);
   // The run's eps and quality figures come out as the engine reports them.
-  EXPECT_FALSE(facade->stats.epsilon.source.empty());
-  EXPECT_EQ(facade->stats.epsilon.source, engine->stats.epsilon.source);
-  EXPECT_EQ(facade->stats.epsilon.epsilon, engine->stats.epsilon.epsilon);
-  ASSERT_TRUE(facade->stats.quality_measured);
+  EXPECT_FALSE(facade->stats.detection.epsilon.source.empty());
+  EXPECT_EQ(facade->stats.detection.epsilon.source, engine->stats.detection.epsilon.source);
+  EXPECT_EQ(facade->stats.detection.epsilon.epsilon, engine->stats.detection.epsilon.epsilon);
+  ASSERT_TRUE(facade->stats.quality.measured);
   EXPECT_EQ(facade->stats.quality.data_fit, engine->stats.quality.data_fit);
   EXPECT_EQ(facade->stats.quality.components.size(), engine->stats.quality.components.size());
-  EXPECT_EQ(facade->stats.lower_bound_source, engine->stats.lower_bound_source);
+  EXPECT_EQ(facade->stats.labeling.lower_bound_source, engine->stats.labeling.lower_bound_source);
   EXPECT_EQ(facade->planes.size(), engine->planes.size());
   // Every membership names an input segment and a returned plane, at most two per segment.
   std::vector<int> per_segment(house.scene.segments.size(), 0);
@@ -476,8 +476,8 @@ TEST(FacadeReconstruct, ResolveWithTheSameWeightsEqualsReconstruct) {
   heavy.edge = 1.0;
   const auto other = prepared->Solve(heavy);
   ASSERT_TRUE(other.has_value()) << other.error().ToString();
-  EXPECT_EQ(other->stats.cells, direct->stats.cells);
-  EXPECT_NE(other->stats.objective, direct->stats.objective);
+  EXPECT_EQ(other->stats.complex.cells, direct->stats.complex.cells);
+  EXPECT_NE(other->stats.labeling.objective, direct->stats.labeling.objective);
   // ... equal to a fresh reconstruction with those weights.
   ReconstructOptions heavy_options = options;
   heavy_options.weights = heavy;

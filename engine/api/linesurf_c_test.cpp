@@ -252,8 +252,8 @@ TEST(CApi, BlocksEngineMatchesTheCppFacade) {
   const auto blocks = Reconstruct(read->scene.View(), cpp_options);
   ASSERT_TRUE(monolithic.has_value()) << monolithic.error().ToString();
   ASSERT_TRUE(blocks.has_value()) << blocks.error().ToString();
-  EXPECT_EQ(blocks->stats.engine, "blocks");
-  EXPECT_GT(blocks->stats.blocks, 1u);
+  EXPECT_EQ(blocks->stats.complex.engine, "blocks");
+  EXPECT_GT(blocks->stats.complex.blocks, 1u);
   ExpectSameMesh(result, *blocks);
   EXPECT_NE(blocks->mesh.vertices, monolithic->mesh.vertices);
   linesurf_result_free(result);

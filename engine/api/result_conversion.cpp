@@ -30,16 +30,13 @@ DetectStats ToPublicStats(const PlaneDetectionStats& s, const pipeline::Sanitize
 
 }  // namespace
 
-ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result,
-                                 const ReconstructOptions& options) {
+ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result) {
   ReconstructResult out;
   out.mesh = ToMesh(result.mesh);
   // The pipeline already moved the planes to world coordinates.
   out.planes = ToWorldPlanes(result.planes, Rigid3{});
   out.memberships = ToMemberships(result.memberships, result.input_segment);
   out.stats = result.stats;
-  // One engine underneath; the report names the partition the options asked for.
-  out.stats.engine = ComplexEngineName(options.engine);
   out.warnings = result.warnings;
   return out;
 }

@@ -9,8 +9,8 @@
 
 namespace linesurf::api {
 
-[[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result,
-                                               const ReconstructOptions& options);
+/// The mesh, planes and memberships in the facade's types; the stats are the engine's own.
+[[nodiscard]] ReconstructResult ToPublicResult(const pipeline::ReconstructResult& result);
 
 /// The planes detected on the sanitised scene, in world coordinates; memberships index the
 /// input segments; the warnings end with the plane-cap warning for `max_planes` (if any).

@@ -7,7 +7,7 @@
 #include "engine/pipeline/reconstruct.h"
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 namespace {
 
 /// The engine's rule, reported as an option error of the facade.
@@ -32,5 +32,5 @@ Status ReconstructOptions::Validate() const noexcept {
   return AsOptionError(pipeline::ValidateMergeCoplanar(merge_coplanar, triangulate));
 }
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

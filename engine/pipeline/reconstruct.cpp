@@ -17,6 +17,7 @@
 #include "engine/pipeline/mesh_validity.h"
 #include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/scene_box.h"
+#include "engine/pipeline/stage_stats.h"
 #include "engine/pipeline/stage_timer.h"
 #include "solver/lp/labeling_backends.h"
 
@@ -55,6 +56,74 @@ void ConfigureStageContext(const ReconstructOptions& options, const RunContext& 
     ctx.ReportProgress(p.stage, p.stage_fraction);
   };
   stage_ctx.log = ctx.log;
+}
+
+/// The sanitised scene with its planes (given or detected), and what the planes stage tells
+/// the report and the result checks.
+struct ScenePlanes {
+  Scene scene;
+  IdVector<SegmentId, SegmentId> input_segment;
+  std::vector<std::string> warnings;
+  SanitizeStats sanitation;
+  DetectionStats detection;
+  std::string plane_cap_warning;   ///< "" unless a detection block stopped at max_planes
+  double detection_epsilon = 0.0;  ///< eps used by detection (0: given planes)
+};
+
+/// Sanitises the scene and keeps its own planes and memberships (stages "sanitize", "detect").
+ScenePlanes GivenPlanes(const Scene& input,
+                        const ReconstructOptions& options,
+                        const RunContext& ctx,
+                        StageTimer& timer) {
+  timer.Start("sanitize");
+  LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(),
+                    kInvalidInput,
+                    kReconstructStage,
+                    "use_given_planes: the scene has no planes or plane memberships");
+  SanitizeResult sane = ValueOrThrow(SanitizeScene(input, options.sanitize));
+  ctx.ThrowIfCancelled(kReconstructStage);
+  timer.Start("detect");  // nothing to detect: the report lists the same stages either way
+  ScenePlanes out;
+  out.detection = MakeDetectionStats(
+      sane.scene, ValueOrThrow(ResolveEpsilon(sane.scene, options.planes, ctx)));
+  out.scene = std::move(sane.scene);
+  out.input_segment = std::move(sane.input_segment);
+  out.warnings = std::move(sane.warnings);
+  out.sanitation = sane.stats;
+  return out;
+}
+
+/// Sanitises the scene and detects its planes (stages "sanitize", "detect").
+ScenePlanes DetectedPlanes(const Scene& input,
+                           const ReconstructOptions& options,
+                           const RunContext& ctx,
+                           StageTimer& timer) {
+  PlaneDetectionOptions detect = options.planes;
+  detect.seed = options.seed;
+  DetectedScene detected = ValueOrThrow(SanitizeAndDetectPlanes(
+      input, options.sanitize, detect, ctx, &timer, &options.detection_blocks));
+  ScenePlanes out;
+  out.detection = MakeDetectionStats(detected);
+  out.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
+  out.detection_epsilon = detected.detection_stats.epsilon;
+  out.scene = std::move(detected.scene);
+  out.input_segment = std::move(detected.input_segment);
+  out.warnings = std::move(detected.warnings);
+  out.sanitation = detected.sanitize_stats;
+  return out;
+}
+
+/// The warning for blocks still crowded with planes when the cuts stopped ("" when none is).
+std::string CrowdedBlocksWarning(const BlockPartitionStats& stats,
+                                 const BlockPartitionOptions& options) {
+  if (stats.crowded_blocks_left == 0) return {};
+  std::ostringstream w;
+  w << stats.crowded_blocks_left << " block(s) still reached by more than "
+    << options.crowded_planes_per_block
+    << " planes when the crowded-block cuts stopped (cut depth or block budget reached): "
+       "their complexes take most of the time and memory; a smaller --block-size splits "
+       "them";
+  return w.str();
 }
 
 }  // namespace
@@ -111,38 +180,15 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     ResultFacts& facts = prepared.facts;
     StageTimer timer;
 
-    Scene scene;
-    if (options.use_given_planes) {
-      timer.Start("sanitize");
-      LINESURF_THROW_IF(input.planes.empty() || !input.HasMemberships(),
-                        kInvalidInput,
-                        kReconstructStage,
-                        "use_given_planes: the scene has no planes or plane memberships");
-      SanitizeResult sane = ValueOrThrow(SanitizeScene(input, options.sanitize));
-      scene = std::move(sane.scene);
-      prepared.input_segment = std::move(sane.input_segment);
-      prepared.warnings = std::move(sane.warnings);
-      stats.input_segments = sane.stats.input_segments;
-      facts.viewpoints_dropped = sane.stats.dropped_bad_viewpoints;
-      stage_ctx.ThrowIfCancelled(kReconstructStage);
-      timer.Start("detect");  // nothing to detect: the report lists the same stages either way
-      stats.epsilon = ValueOrThrow(ResolveEpsilon(scene, options.planes, stage_ctx));
-    } else {
-      PlaneDetectionOptions detect = options.planes;
-      detect.seed = options.seed;
-      DetectedScene detected = ValueOrThrow(SanitizeAndDetectPlanes(
-          input, options.sanitize, detect, stage_ctx, &timer, &options.detection_blocks));
-      stats.detection_block_size = detected.detection_block_size;
-      scene = std::move(detected.scene);
-      prepared.input_segment = std::move(detected.input_segment);
-      prepared.warnings = std::move(detected.warnings);
-      stats.input_segments = detected.sanitize_stats.input_segments;
-      facts.viewpoints_dropped = detected.sanitize_stats.dropped_bad_viewpoints;
-      facts.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
-      stats.capped_blocks = static_cast<std::size_t>(detected.detection_stats.capped_blocks);
-      facts.detection_epsilon = detected.detection_stats.epsilon;
-      stats.epsilon = std::move(detected.detection_stats.epsilon_estimate);
-    }
+    ScenePlanes planes = options.use_given_planes ? GivenPlanes(input, options, stage_ctx, timer)
+                                                  : DetectedPlanes(input, options, stage_ctx, timer);
+    Scene& scene = planes.scene;
+    prepared.input_segment = std::move(planes.input_segment);
+    prepared.warnings = std::move(planes.warnings);
+    stats.detection = std::move(planes.detection);
+    facts.viewpoints_dropped = planes.sanitation.dropped_bad_viewpoints;
+    facts.plane_cap_warning = std::move(planes.plane_cap_warning);
+    facts.detection_epsilon = planes.detection_epsilon;
     LINESURF_THROW_IF(scene.planes.empty(),
                       kDegenerate,
                       kReconstructStage,
@@ -159,33 +205,10 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     prepared.blocks = ValueOrThrow(BuildBlockPartition(scene, box, partition_options, stage_ctx));
     const partition::BlockComplexes& bc = prepared.blocks.complexes;
     prepared.warnings.insert(prepared.warnings.end(), bc.warnings.begin(), bc.warnings.end());
-    stats.planes_in_complex = scene.planes.size() - prepared.blocks.stats.planes_without_inliers;
-    const BlockPartitionStats& ps = prepared.blocks.stats;
-    stats.block_size = ps.block_size;
-    stats.block_size_automatic = ps.automatic_size;
-    if (ps.automatic_size) {
-      stats.mean_segments_per_block = ps.size_choice.mean_segments_per_block;
-      stats.mean_planes_per_block = ps.size_choice.mean_planes_per_block;
-      stats.block_size_at_floor = ps.size_choice.limited_by_length;
-    }
-    stats.blocks = bc.blocks.size();
-    stats.seam_facets = bc.stats.seam_facets;
-    stats.crowded_split_faces = ps.crowded_split_faces;
-    stats.crowded_blocks = ps.crowded_blocks_left;
-    if (ps.crowded_blocks_left > 0) {
-      std::ostringstream w;
-      w << ps.crowded_blocks_left << " block(s) still reached by more than "
-        << options.blocks.crowded_planes_per_block
-        << " planes when the crowded-block cuts stopped (cut depth or block budget reached): "
-           "their complexes take most of the time and memory; a smaller --block-size splits "
-           "them";
-      prepared.warnings.push_back(w.str());
-    }
-    for (const partition::BlockComplex& b : bc.blocks) {
-      stats.cells += b.complex.NumCells();
-      stats.facets += b.complex.NumFacets();
-      stats.edges += b.complex.NumEdges();
-      stats.vertices += b.complex.NumVertices();
+    stats.complex = MakeComplexStats(prepared.blocks, options.blocks, scene.planes.size());
+    if (std::string crowded = CrowdedBlocksWarning(prepared.blocks.stats, options.blocks);
+        !crowded.empty()) {
+      prepared.warnings.push_back(std::move(crowded));
     }
     timer.Stop();
 
@@ -196,18 +219,14 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     facts.auto_mode = options.scene_mode == SceneMode::kAuto;
     facts.interior =
         facts.auto_mode ? facts.decision.interior : options.scene_mode == SceneMode::kInterior;
-    if (facts.auto_mode) stats.scene_mode_reason = facts.decision.reason;
-    stats.scene_mode = facts.interior ? "interior" : "exterior";
+    stats.scene = MakeSceneModeStats(facts);
 
     facts.planes = scene.planes.size();
-    facts.planes_in_complex = stats.planes_in_complex;
-    facts.cells = stats.cells;
+    facts.planes_in_complex = stats.complex.planes_in_complex;
+    facts.cells = stats.complex.cells;
     facts.scene_diagonal = box.Extent().norm();
-    stats.stage_seconds = timer.Stages();
-    stats.segments = scene.NumSegments();
-    stats.viewpoints = scene.viewpoints.size();
-    stats.observations = scene.observations.NumItems();
-    stats.planes = scene.planes.size();
+    stats.inputs = MakeInputStats(planes.sanitation, scene);
+    stats.resources.stage_seconds = timer.Stages();
     prepared.scene = std::move(scene);
     return prepared;
   });
@@ -237,11 +256,13 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
         prepared.blocks.complexes, scene, options.energy, boundary, stage_ctx));
     result.warnings.insert(result.warnings.end(), evidence.warnings.begin(),
                            evidence.warnings.end());
+    stats.energy = MakeEnergyStats(evidence);
 
     timer.Start("solve");
     const std::vector<std::uint32_t> block_of_cell = SolveBlocks(prepared, options.solver);
     const solver::LabelingResult labeling = ValueOrThrow(
         solver::SolveLabeling(evidence.energy, block_of_cell, options.solver, stage_ctx));
+    stats.labeling = MakeLabelingStats(labeling);
 
     timer.Start("extract");
     ExtractOptions extract;
@@ -256,12 +277,10 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     facts.open_seam_faces = open.faces;
     facts.mesh_area = open.total_area;
     result.mesh = std::move(surface.mesh);
-    stats.split_vertices = surface.stats.split_vertices;
     IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 
-    facts.full_cells = static_cast<std::size_t>(
-        std::count(labeling.labels.begin(), labeling.labels.end(), std::uint8_t{1}));
+    facts.full_cells = stats.labeling.full_cells;
     CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labeling.labels, facts);
     const EnergyOptions& e = options.energy;
     facts.has_data_weight = e.weights.textural > 0.0 || e.weights.structural > 0.0 ||
@@ -278,32 +297,28 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
 
     // On a surface the judgement accepted (not empty, not inverted); the pieces left are closed.
     // The removal measures the surface it returns: those are the final figures.
+    const double epsilon = stats.detection.epsilon.epsilon;
     std::optional<SurfaceQuality> measured;
     if (options.remove_floating_fragments) {
       timer.Start("fragments");
-      FragmentRemoval kept = ValueOrThrow(RemoveFloatingFragments(
-          result.mesh, scene, stats.epsilon.epsilon, options.quality, stage_ctx));
+      FragmentRemoval kept = ValueOrThrow(
+          RemoveFloatingFragments(result.mesh, scene, epsilon, options.quality, stage_ctx));
       if (kept.removed_components > 0) {
         result.mesh = std::move(kept.mesh);
         topology = CheckIndexTopology(result.mesh);
       }
+      stats.fragments = MakeFragmentStats(kept);
       measured = std::move(kept.quality);
-      stats.removed_fragments = kept.removed_components;
-      stats.removed_fragment_volume = kept.removed_volume;
-      stats.removed_fragment_segments = kept.removed_supported_segments;
       timer.Stop();
     }
 
     // Figures without ground truth, in the local frame, on a surface the judgement accepted.
     if (options.measure_quality) {
       timer.Start("quality");
-      stats.quality = measured ? std::move(*measured)
-                               : ValueOrThrow(MeasureSurfaceQuality(result.mesh,
-                                                                    scene,
-                                                                    stats.epsilon.epsilon,
-                                                                    options.quality,
-                                                                    stage_ctx));
-      stats.quality_measured = true;
+      stats.quality = MakeQualityStats(
+          measured ? std::move(*measured)
+                   : ValueOrThrow(MeasureSurfaceQuality(
+                         result.mesh, scene, epsilon, options.quality, stage_ctx)));
       timer.Stop();
     }
     for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
@@ -322,38 +337,10 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     result.memberships = scene.memberships;
     result.input_segment = prepared.input_segment;
 
-    stats.stage_seconds.insert(stats.stage_seconds.end(), timer.Stages().begin(),
-                               timer.Stages().end());
-    stats.total_seconds = 0.0;
-    for (const auto& stage : stats.stage_seconds) stats.total_seconds += stage.second;
-    for (int k = 0; k < 3; ++k) {
-      stats.segments_with_planes[k] = evidence.stats.segments_with_planes[k];
-    }
-    stats.sigma = evidence.stats.sigma;
-    stats.crease_weight = evidence.stats.crease_weight;
-    stats.pair_terms = evidence.energy.NumPairs();
-    stats.structural_groups = evidence.energy.NumStructuralGroups();
-    stats.parity_groups = evidence.energy.NumParityGroups();
-    stats.fixed_cells = evidence.stats.fixed_cells;
-    stats.lp_variables = labeling.lp_columns;
-    stats.lp_constraints = labeling.lp_rows;
-    stats.lp_nonzeros = labeling.lp_nonzeros;
-    stats.solver_backend = solver::BackendReportName(labeling);
-    stats.solver_status = labeling.status;
-    stats.objective = labeling.labels_objective;
-    stats.relaxed_objective = labeling.relaxed_objective;
-    stats.rounded_objective = labeling.rounded_objective;
-    stats.lower_bound = labeling.lower_bound;
-    stats.lower_bound_source = labeling.lower_bound_source;
-    stats.labeling_method = labeling.method;
-    stats.fractional_cells = labeling.fractional_cells;
-    stats.full_cells = facts.full_cells;
-    stats.mesh_vertices = result.mesh.vertices.size();
-    stats.mesh_faces = result.mesh.NumFaces();
-    stats.mesh_closed = topology.closed;
-    stats.mesh_manifold = topology.manifold;
-    stats.mesh_volume = topology.signed_volume;
-    stats.peak_memory_bytes = PeakRssBytes();
+    stats.surface = MakeSurfaceStats(result.mesh, topology, surface.stats);
+    std::vector<std::pair<std::string, double>> stages = prepared.stats.resources.stage_seconds;
+    stages.insert(stages.end(), timer.Stages().begin(), timer.Stages().end());
+    stats.resources = MakeResourceStats(std::move(stages));
     return result;
   });
 }

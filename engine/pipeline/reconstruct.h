@@ -86,7 +86,7 @@ struct ReconstructOptions {
   SurfaceQualityOptions quality;
   /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines, RemoveFloatingFragments) when another
-  /// component holds more; RunStats::removed_fragments counts them. Default true: pieces behind
+  /// component holds more; RunStats::fragments counts them. Default true: pieces behind
   /// one or two lines (clutter, vegetation) are not the building (docs/design/reconstruction.md).
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
@@ -134,8 +134,8 @@ struct PreparedReconstruction {
   /// What the result checks (JudgeResult) need from the preparation; `interior` is the
   /// resolved boundary condition.
   ResultFacts facts;
-  /// Filled up to the complex: stage_seconds of sanitize, detect and complex, input and plane
-  /// counts, complex sizes, scene mode.
+  /// Filled up to the scene mode: inputs, detection, complex, scene, and the stage times of
+  /// sanitize, detect, complex and scene_mode (resources.stage_seconds).
   RunStats stats;
   std::vector<std::string> warnings;
 };

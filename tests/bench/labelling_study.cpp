@@ -130,18 +130,18 @@ Outcome FromLabeling(const solver::LabelingResult& r, std::size_t cells) {
 
 Outcome FromStats(const pipeline::RunStats& s) {
   Outcome o;
-  o.objective = s.objective;
-  o.rounded = s.rounded_objective;
-  o.relaxed = s.relaxed_objective;
-  o.lower_bound = s.lower_bound;
-  o.lower_bound_source = s.lower_bound_source;
-  o.method = s.labeling_method;
-  o.status = s.solver_status;
-  o.backend = s.solver_backend;
-  o.cells = s.cells;
-  o.lp_columns = s.lp_variables;
-  o.full_cells = s.full_cells;
-  for (const auto& [stage, seconds] : s.stage_seconds) {
+  o.objective = s.labeling.objective;
+  o.rounded = s.labeling.rounded_objective;
+  o.relaxed = s.labeling.relaxed_objective;
+  o.lower_bound = s.labeling.lower_bound;
+  o.lower_bound_source = s.labeling.lower_bound_source;
+  o.method = s.labeling.labeling_method;
+  o.status = s.labeling.solver_status;
+  o.backend = s.labeling.solver_backend;
+  o.cells = s.complex.cells;
+  o.lp_columns = s.labeling.lp_variables;
+  o.full_cells = s.labeling.full_cells;
+  for (const auto& [stage, seconds] : s.resources.stage_seconds) {
     if (stage == "solve") o.seconds = seconds;
   }
   return o;

@@ -67,8 +67,8 @@ auto EvaluateAt5cm(const synth::SyntheticScene& s, const PolygonMesh& mesh) {
 }
 
 void ExpectGood(const synth::SyntheticScene& s, const pipeline::ReconstructResult& r) {
-  EXPECT_TRUE(r.stats.mesh_closed);
-  EXPECT_TRUE(r.stats.mesh_manifold);
+  EXPECT_TRUE(r.stats.surface.mesh_closed);
+  EXPECT_TRUE(r.stats.surface.mesh_manifold);
   ASSERT_GT(r.mesh.NumFaces(), 0u);
   auto e = EvaluateAt5cm(s, r.mesh);
   ASSERT_TRUE(e.has_value()) << e.error().ToString();
@@ -79,17 +79,17 @@ void ExpectGood(const synth::SyntheticScene& s, const pipeline::ReconstructResul
   // Normals point from matter to empty space: a positive volume around a solid seen from
   // outside, a negative one around the empty room seen from inside.
   if (s.interior) {
-    EXPECT_LT(r.stats.mesh_volume, 0.0);
+    EXPECT_LT(r.stats.surface.mesh_volume, 0.0);
   } else {
-    EXPECT_GT(r.stats.mesh_volume, 0.0);
+    EXPECT_GT(r.stats.surface.mesh_volume, 0.0);
   }
   std::printf("precision@5cm %.4f completeness@5cm %.4f cells %zu lp %zu x %zu %s\n",
               e->precision[0],
               e->completeness[0],
-              r.stats.cells,
-              r.stats.lp_variables,
-              r.stats.lp_constraints,
-              r.stats.solver_backend.c_str());
+              r.stats.complex.cells,
+              r.stats.labeling.lp_variables,
+              r.stats.labeling.lp_constraints,
+              r.stats.labeling.solver_backend.c_str());
 }
 
 /// The bytes of the mesh written as binary PLY to `path`.
@@ -128,10 +128,10 @@ TEST(Reconstruct, CubeEdgesGiveAClosedCubeOfVolumeEight) {
   o.use_given_planes = false;  // detect the six faces from the twelve edges
   o.planes.epsilon = 0.01;
   const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
-  EXPECT_EQ(r.stats.planes, 6u);
-  EXPECT_TRUE(r.stats.mesh_closed);
-  EXPECT_TRUE(r.stats.mesh_manifold);
-  EXPECT_NEAR(r.stats.mesh_volume, 8.0, 0.08);
+  EXPECT_EQ(r.stats.detection.planes, 6u);
+  EXPECT_TRUE(r.stats.surface.mesh_closed);
+  EXPECT_TRUE(r.stats.surface.mesh_manifold);
+  EXPECT_NEAR(r.stats.surface.mesh_volume, 8.0, 0.08);
   EXPECT_EQ(r.mesh.NumFaces(), 6u);
 }
 
@@ -170,13 +170,13 @@ TEST(Reconstruct, CreaseTermKeepsTheUntexturedInnerWallsOfAFloor) {
   };
   const pipeline::ReconstructResult with =
       RunReconstruct(s.scene, Options(pipeline::SceneMode::kAuto));
-  EXPECT_EQ(with.stats.scene_mode, "interior");
-  EXPECT_EQ(with.stats.crease_weight, pipeline::kInteriorCreaseWeight);
+  EXPECT_EQ(with.stats.scene.scene_mode, "interior");
+  EXPECT_EQ(with.stats.energy.crease_weight, pipeline::kInteriorCreaseWeight);
   ExpectGood(s, with);
   pipeline::ReconstructOptions paper = Options(pipeline::SceneMode::kAuto);
   paper.energy.weights.crease = 0.0;
   const pipeline::ReconstructResult without = RunReconstruct(s.scene, paper);
-  EXPECT_EQ(without.stats.crease_weight, 0.0);
+  EXPECT_EQ(without.stats.energy.crease_weight, 0.0);
   const double kept = completeness(with);
   const double lost = completeness(without);
   EXPECT_GE(kept, 0.95);
@@ -190,8 +190,8 @@ TEST(Reconstruct, AutoModeTellsRoomsFromHouses) {
       RunReconstruct(house.scene, Options(pipeline::SceneMode::kAuto));
   const pipeline::ReconstructResult r =
       RunReconstruct(room.scene, Options(pipeline::SceneMode::kAuto));
-  EXPECT_EQ(h.stats.scene_mode, "exterior") << h.stats.scene_mode_reason;
-  EXPECT_EQ(r.stats.scene_mode, "interior") << r.stats.scene_mode_reason;
+  EXPECT_EQ(h.stats.scene.scene_mode, "exterior") << h.stats.scene.scene_mode_reason;
+  EXPECT_EQ(r.stats.scene.scene_mode, "interior") << r.stats.scene.scene_mode_reason;
 }
 
 TEST(Reconstruct, SameSeedGivesByteIdenticalMeshesForAnyThreadCount) {
@@ -212,15 +212,17 @@ TEST(Reconstruct, OneBlockIsABlockSideCoveringTheBox) {
     o.planes.block_size = 1000.0;  // one detection block, one partition block
     o.blocks.one_block = true;
     const pipeline::ReconstructResult mono = RunReconstruct(s.scene, o);
-    EXPECT_EQ(mono.stats.blocks, 1u);
+    EXPECT_EQ(mono.stats.complex.blocks, 1u);
+    EXPECT_EQ(mono.stats.complex.engine, "monolithic");  // the partition the options asked for
     o.blocks.one_block = false;
     o.blocks.block_size = 1000.0;
     const pipeline::ReconstructResult blocks = RunReconstruct(s.scene, o);
-    EXPECT_EQ(blocks.stats.blocks, 1u);
-    EXPECT_FALSE(blocks.stats.block_size_automatic);  // given: no figures of the size rule
-    EXPECT_EQ(blocks.stats.mean_segments_per_block, 0.0);
-    EXPECT_EQ(blocks.stats.mean_planes_per_block, 0.0);
-    EXPECT_FALSE(blocks.stats.block_size_at_floor);
+    EXPECT_EQ(blocks.stats.complex.blocks, 1u);
+    EXPECT_EQ(blocks.stats.complex.engine, "blocks");
+    EXPECT_FALSE(blocks.stats.complex.block_size_automatic);  // given: no figures of the size rule
+    EXPECT_EQ(blocks.stats.complex.mean_segments_per_block, 0.0);
+    EXPECT_EQ(blocks.stats.complex.mean_planes_per_block, 0.0);
+    EXPECT_FALSE(blocks.stats.complex.block_size_at_floor);
     const std::string mono_bytes = MeshBytes(mono.mesh, dir / "mono.ply");
     ASSERT_GT(mono.mesh.NumFaces(), 0u);
     EXPECT_EQ(MeshBytes(blocks.mesh, dir / "blocks.ply"), mono_bytes);
@@ -246,12 +248,12 @@ TEST(Reconstruct, BlockEngineWithManyBlocksIsClosedManifoldConformingAndAccurate
       pipeline::ReconstructOptions o = Options(mode);
       o.use_given_planes = given_planes;
       const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
-      EXPECT_GT(r.stats.blocks, 1u);
-      EXPECT_GT(r.stats.seam_facets, 0u);
-      EXPECT_TRUE(r.stats.block_size_automatic);
-      EXPECT_GT(r.stats.mean_segments_per_block, 0.0);
-      EXPECT_GT(r.stats.mean_planes_per_block, 0.0);
-      EXPECT_EQ(r.stats.block_size_at_floor, at_floor);
+      EXPECT_GT(r.stats.complex.blocks, 1u);
+      EXPECT_GT(r.stats.complex.seam_facets, 0u);
+      EXPECT_TRUE(r.stats.complex.block_size_automatic);
+      EXPECT_GT(r.stats.complex.mean_segments_per_block, 0.0);
+      EXPECT_GT(r.stats.complex.mean_planes_per_block, 0.0);
+      EXPECT_EQ(r.stats.complex.block_size_at_floor, at_floor);
       ExpectGood(s, r);
       EXPECT_EQ(testing::CountTJunctions(r.mesh), 0u);
     }
@@ -298,9 +300,10 @@ TEST(Reconstruct, MergeCoplanarGivesTheSameSurfaceInFewerFaces) {
     ExpectGood(s, merged);
     EXPECT_LT(2 * merged.mesh.NumFaces(), facets.mesh.NumFaces());
     non_convex += NonConvexFaces(merged.mesh);
-    EXPECT_NEAR(
-        merged.stats.mesh_volume, facets.stats.mesh_volume, 1e-9 * facets.stats.mesh_volume);
-    ASSERT_TRUE(merged.stats.quality_measured && facets.stats.quality_measured);
+    EXPECT_NEAR(merged.stats.surface.mesh_volume,
+                facets.stats.surface.mesh_volume,
+                1e-9 * facets.stats.surface.mesh_volume);
+    ASSERT_TRUE(merged.stats.quality.measured && facets.stats.quality.measured);
     EXPECT_NEAR(merged.stats.quality.data_fit, facets.stats.quality.data_fit, 1e-9);
     EXPECT_NEAR(merged.stats.quality.visibility_consistency,
                 facets.stats.quality.visibility_consistency,
@@ -342,9 +345,10 @@ TEST(Reconstruct, BlockEngineWithSmallBlocksKeepsTheDetectionAndNeverClosesSilen
   o.blocks.one_block = false;
   o.blocks.block_size = 3.0;
   const pipeline::ReconstructResult r = RunReconstruct(s.scene, o);
-  EXPECT_GT(r.stats.blocks, 50u);
-  EXPECT_EQ(r.stats.planes, mono.stats.planes);  // the house is one detection block
-  EXPECT_EQ(r.stats.detection_block_size, 0.0);
+  EXPECT_GT(r.stats.complex.blocks, 50u);
+  EXPECT_EQ(r.stats.detection.planes,
+            mono.stats.detection.planes);  // the house is one detection block
+  EXPECT_EQ(r.stats.detection.detection_block_size, 0.0);
   EXPECT_FALSE(HasOpenSeamWarning(r));
   ExpectGood(s, r);
 
@@ -353,7 +357,7 @@ TEST(Reconstruct, BlockEngineWithSmallBlocksKeepsTheDetectionAndNeverClosesSilen
   o.planes.block_size = 3.0;
   o.energy.weights.open_seam = 0.0;
   const pipeline::ReconstructResult boxed = RunReconstruct(s.scene, o);
-  EXPECT_LT(boxed.stats.planes, mono.stats.planes);
+  EXPECT_LT(boxed.stats.detection.planes, mono.stats.detection.planes);
   EXPECT_TRUE(HasOpenSeamWarning(boxed));
 }
 
@@ -372,8 +376,9 @@ TEST(Reconstruct, BlockEngineGivesTheSameBytesForAnyThreadCount) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   o.use_given_planes = false;
-  ExpectSameBytesForAnyThreadCount(
-      s.scene, o, [](const pipeline::ReconstructResult& r) { EXPECT_GT(r.stats.blocks, 1u); });
+  ExpectSameBytesForAnyThreadCount(s.scene, o, [](const pipeline::ReconstructResult& r) {
+    EXPECT_GT(r.stats.complex.blocks, 1u);
+  });
 }
 
 // Crowded blocks cut by faces through their slabs (here a block of more than 4 planes counts as
@@ -385,8 +390,8 @@ TEST(Reconstruct, BlockEngineWithCrowdedBlocksCutGivesTheSameBytesForAnyThreadCo
   o.use_given_planes = false;
   o.blocks.crowded_planes_per_block = 4;
   ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
-    EXPECT_GT(r.stats.crowded_split_faces, 0u);
-    EXPECT_EQ(HasCrowdedBlocksWarning(r), r.stats.crowded_blocks > 0);
+    EXPECT_GT(r.stats.complex.crowded_split_faces, 0u);
+    EXPECT_EQ(HasCrowdedBlocksWarning(r), r.stats.complex.crowded_blocks > 0);
     ExpectGood(s, r);
   });
 }
@@ -396,13 +401,13 @@ TEST(Reconstruct, BlockEngineWarnsAboutCrowdedBlocksLeft) {
   const synth::SyntheticScene s = Make("house");
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   const pipeline::ReconstructResult plain = RunReconstruct(s.scene, o);
-  EXPECT_EQ(plain.stats.crowded_blocks, 0u);
+  EXPECT_EQ(plain.stats.complex.crowded_blocks, 0u);
   EXPECT_FALSE(HasCrowdedBlocksWarning(plain));
   o.blocks.crowded_planes_per_block = 4;
   o.blocks.crowded_cut_depth = 0;
   const pipeline::ReconstructResult uncut = RunReconstruct(s.scene, o);
-  EXPECT_EQ(uncut.stats.crowded_split_faces, 0u);
-  EXPECT_GT(uncut.stats.crowded_blocks, 0u);
+  EXPECT_EQ(uncut.stats.complex.crowded_split_faces, 0u);
+  EXPECT_GT(uncut.stats.complex.crowded_blocks, 0u);
   EXPECT_TRUE(HasCrowdedBlocksWarning(uncut));
 }
 
@@ -413,12 +418,12 @@ TEST(Reconstruct, AutoSolvesLargeLabellingsPerBlockWithTheSameBytesForAnyThreadC
   pipeline::ReconstructOptions o = Options(pipeline::SceneMode::kExterior);
   o.solver.auto_rule.blocks_min_columns = 0;
   ExpectSameBytesForAnyThreadCount(s.scene, o, [&s](const pipeline::ReconstructResult& r) {
-    EXPECT_GT(r.stats.blocks, 1u);
-    EXPECT_EQ(r.stats.solver_backend, "blocks");
-    EXPECT_NE(r.stats.labeling_method.find("block"), std::string::npos)
-        << r.stats.labeling_method;
-    EXPECT_NE(r.stats.lower_bound_source, "none");
-    EXPECT_LE(r.stats.lower_bound, r.stats.objective + 1e-9);
+    EXPECT_GT(r.stats.complex.blocks, 1u);
+    EXPECT_EQ(r.stats.labeling.solver_backend, "blocks");
+    EXPECT_NE(r.stats.labeling.labeling_method.find("block"), std::string::npos)
+        << r.stats.labeling.labeling_method;
+    EXPECT_NE(r.stats.labeling.lower_bound_source, "none");
+    EXPECT_LE(r.stats.labeling.lower_bound, r.stats.labeling.objective + 1e-9);
     ExpectGood(s, r);
   });
 }
@@ -437,10 +442,11 @@ TEST(Reconstruct, ReportsQualityWithoutGroundTruth) {
   const synth::SyntheticScene s = Make("house");
   const pipeline::ReconstructResult r =
       RunReconstruct(s.scene, Options(pipeline::SceneMode::kExterior));
-  ASSERT_TRUE(r.stats.quality_measured);
+  ASSERT_TRUE(r.stats.quality.measured);
   const pipeline::SurfaceQuality& q = r.stats.quality;
-  EXPECT_EQ(r.stats.epsilon.source, "planes");  // auto eps from the given planes' residuals
-  EXPECT_NEAR(r.stats.epsilon.noise_scale, 0.01, 0.003);  // the 1 cm of synth noise
+  EXPECT_EQ(r.stats.detection.epsilon.source,
+            "planes");  // auto eps from the given planes' residuals
+  EXPECT_NEAR(r.stats.detection.epsilon.noise_scale, 0.01, 0.003);  // the 1 cm of synth noise
   EXPECT_GE(q.data_fit, 0.99);
   EXPECT_GE(q.visibility_consistency, 0.95);
   EXPECT_EQ(q.components.size(), 1u);
@@ -458,18 +464,18 @@ TEST(Reconstruct, FloatingFragmentsAreRemovedByDefaultAndKeptOnRequest) {
   o.remove_floating_fragments = false;
   const pipeline::ReconstructResult kept = RunReconstruct(s.scene, o);
   ASSERT_GE(kept.stats.quality.floating_fragments, 1u);
-  EXPECT_EQ(kept.stats.removed_fragments, 0u);
-  EXPECT_EQ(removed.stats.removed_fragments, kept.stats.quality.floating_fragments);
+  EXPECT_EQ(kept.stats.fragments.removed_fragments, 0u);
+  EXPECT_EQ(removed.stats.fragments.removed_fragments, kept.stats.quality.floating_fragments);
   EXPECT_EQ(removed.stats.quality.floating_fragments, 0u);
-  EXPECT_EQ(removed.stats.quality.components.size() + removed.stats.removed_fragments,
+  EXPECT_EQ(removed.stats.quality.components.size() + removed.stats.fragments.removed_fragments,
             kept.stats.quality.components.size());
   EXPECT_LT(removed.mesh.NumFaces(), kept.mesh.NumFaces());
-  EXPECT_TRUE(removed.stats.mesh_closed);
-  EXPECT_TRUE(removed.stats.mesh_manifold);
-  EXPECT_NEAR(removed.stats.mesh_volume + removed.stats.removed_fragment_volume,
-              kept.stats.mesh_volume,
-              1e-9 * kept.stats.mesh_volume);
-  EXPECT_EQ(removed.stats.objective, kept.stats.objective);  // the same labelling
+  EXPECT_TRUE(removed.stats.surface.mesh_closed);
+  EXPECT_TRUE(removed.stats.surface.mesh_manifold);
+  EXPECT_NEAR(removed.stats.surface.mesh_volume + removed.stats.fragments.removed_fragment_volume,
+              kept.stats.surface.mesh_volume,
+              1e-9 * kept.stats.surface.mesh_volume);
+  EXPECT_EQ(removed.stats.labeling.objective, kept.stats.labeling.objective);  // the same labelling
 }
 
 /// The scene with every length multiplied by `scale` (about the origin).
@@ -492,11 +498,11 @@ TEST(Reconstruct, SceneInOtherUnitsGivesTheSameMeshScaled) {
   o.use_given_planes = false;
   const pipeline::ReconstructResult metres = RunReconstruct(s.scene, o);
   const pipeline::ReconstructResult scaled = RunReconstruct(Scaled(s.scene, kScale), o);
-  EXPECT_EQ(metres.stats.epsilon.source, "probe");
-  EXPECT_NEAR(scaled.stats.epsilon.epsilon,
-              kScale * metres.stats.epsilon.epsilon,
-              1e-9 * kScale * metres.stats.epsilon.epsilon);
-  EXPECT_EQ(scaled.stats.planes, metres.stats.planes);
+  EXPECT_EQ(metres.stats.detection.epsilon.source, "probe");
+  EXPECT_NEAR(scaled.stats.detection.epsilon.epsilon,
+              kScale * metres.stats.detection.epsilon.epsilon,
+              1e-9 * kScale * metres.stats.detection.epsilon.epsilon);
+  EXPECT_EQ(scaled.stats.detection.planes, metres.stats.detection.planes);
   ASSERT_EQ(scaled.mesh.NumFaces(), metres.mesh.NumFaces());
   ASSERT_EQ(scaled.mesh.vertices.size(), metres.mesh.vertices.size());
   EXPECT_EQ(scaled.mesh.face_indices, metres.mesh.face_indices);

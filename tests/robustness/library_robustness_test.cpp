@@ -131,8 +131,8 @@ TEST(LibraryApi, ReconstructHandlesGeoreferencedOffsets) {
     RecordVerdict(kKind, 0);
     const auto result = pipeline::Reconstruct(CubeScene(1.0, offset), ExteriorEngineOptions(), ctx);
     ASSERT_TRUE(result.has_value()) << offset << ": " << result.error().ToString();
-    EXPECT_TRUE(result->stats.mesh_closed) << offset;
-    EXPECT_NEAR(result->stats.mesh_volume, 8.0, 8.0 * 1e-6) << offset;
+    EXPECT_TRUE(result->stats.surface.mesh_closed) << offset;
+    EXPECT_NEAR(result->stats.surface.mesh_volume, 8.0, 8.0 * 1e-6) << offset;
   }
 }
 

@@ -93,21 +93,32 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
     std::fprintf(stderr,
                  "reconstruct: %zu segments, %zu planes, %s scene; %zu cells, LP %zu x %zu (%s, "
                  "%s); mesh %zu vertices, %zu faces, %s, %s; %.2f s\n",
-                 s.segments, s.planes, s.scene_mode.c_str(), s.cells, s.lp_variables,
-                 s.lp_constraints, s.solver_backend.c_str(), s.solver_status.c_str(),
-                 s.mesh_vertices, s.mesh_faces, s.mesh_closed ? "closed" : "NOT closed",
-                 s.mesh_manifold ? "2-manifold" : "NOT 2-manifold", s.total_seconds);
-    std::fprintf(stderr, "reconstruct: eps %.6g (%s)\n", s.epsilon.epsilon,
-                 s.epsilon.source.c_str());
-    if (s.removed_fragments > 0) {
+                 s.inputs.segments,
+                 s.detection.planes,
+                 s.scene.scene_mode.c_str(),
+                 s.complex.cells,
+                 s.labeling.lp_variables,
+                 s.labeling.lp_constraints,
+                 s.labeling.solver_backend.c_str(),
+                 s.labeling.solver_status.c_str(),
+                 s.surface.mesh_vertices,
+                 s.surface.mesh_faces,
+                 s.surface.mesh_closed ? "closed" : "NOT closed",
+                 s.surface.mesh_manifold ? "2-manifold" : "NOT 2-manifold",
+                 s.resources.total_seconds);
+    std::fprintf(stderr,
+                 "reconstruct: eps %.6g (%s)\n",
+                 s.detection.epsilon.epsilon,
+                 s.detection.epsilon.source.c_str());
+    if (s.fragments.removed_fragments > 0) {
       std::fprintf(stderr,
                    "reconstruct: removed %zu floating fragments (volume %.6g, %zu supported "
                    "segments)\n",
-                   s.removed_fragments,
-                   s.removed_fragment_volume,
-                   s.removed_fragment_segments);
+                   s.fragments.removed_fragments,
+                   s.fragments.removed_fragment_volume,
+                   s.fragments.removed_fragment_segments);
     }
-    if (s.quality_measured) {
+    if (s.quality.measured) {
       std::fputs(SurfaceQualitySummary(s.quality, "reconstruct: ").c_str(), stderr);
     }
   }

@@ -43,11 +43,12 @@ int main(int argc, char** argv) {
   const linesurf::ReconstructStats& s = result->stats;
   std::printf("linesurf %s: %zu planes, %zu cells, mesh %zu vertices / %zu faces (%s), %.2f s\n",
               linesurf::LibraryVersion(),
-              s.planes,
-              s.cells,
-              s.mesh_vertices,
-              s.mesh_faces,
-              s.mesh_closed && s.mesh_manifold ? "closed 2-manifold" : "NOT closed",
-              s.total_seconds);
+              s.detection.planes,
+              s.complex.cells,
+              s.surface.mesh_vertices,
+              s.surface.mesh_faces,
+              s.surface.mesh_closed && s.surface.mesh_manifold ? "closed 2-manifold"
+                                                               : "NOT closed",
+              s.resources.total_seconds);
   return 0;
 }

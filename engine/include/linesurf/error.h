@@ -7,7 +7,7 @@
 #include <variant>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// What went wrong, coarsely; hosts switch on it, people read Error::message.
 enum class ErrorCode {
@@ -93,5 +93,5 @@ class [[nodiscard]] Expected<void> {
 
 using Status = Expected<void>;
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

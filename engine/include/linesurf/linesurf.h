@@ -36,7 +36,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// @brief The whole method: sanitise, planes (detected or given), cell complex, evidence, LP
 /// labelling, surface extraction.
@@ -185,5 +185,5 @@ class LINESURF_API Reconstruction {
 /// True for a name ending in ".jsonl" (case-insensitive, e.g. ".city.jsonl"): CityJSONSeq by name.
 [[nodiscard]] LINESURF_API bool IsCityJsonSeqPath(const std::string& path) noexcept;
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

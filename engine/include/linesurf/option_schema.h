@@ -21,7 +21,7 @@
 #include <utility>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// The values a numeric option accepts; a NaN or an infinity is refused whatever the range.
 struct OptionRange {
@@ -353,5 +353,5 @@ template <typename Options>
   return first;
 }
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

@@ -13,7 +13,7 @@
 #include <string_view>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// Largest num_threads accepted (the CLI's -j bound too).
 inline constexpr int kMaxThreads = 256;
@@ -199,7 +199,7 @@ struct ReconstructOptions {
   QualityOptions quality;
   /// Drop the surface's floating fragments (solid components holding fewer than
   /// quality.min_lines_per_component supported lines) when another component holds more;
-  /// counted in ReconstructStats::removed_fragments.
+  /// counted in ReconstructStats::fragments.
   bool remove_floating_fragments = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
@@ -362,5 +362,5 @@ template <typename E>
   return OptionEnumFromName<ComplexEngine>(name);
 }
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

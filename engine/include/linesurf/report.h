@@ -12,10 +12,12 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
-/// Options (by path, nested), counts, block and scene decisions, eps, solver, mesh, its
-/// validity (CheckMesh), quality figures when measured, peak memory and warnings.
+/// stats_version (the stats' layout_version), options (by path, nested), then each stage struct
+/// of the stats under the keys of linesurf 1's report: counts, block and scene decisions, eps,
+/// solver, mesh, quality figures when measured, stage times and peak memory; the mesh's validity
+/// (CheckMesh) and the warnings.
 [[nodiscard]] LINESURF_API std::string ReportJson(const ReconstructResult& result,
                                                   const ReconstructOptions& options);
 /// Options, detection stats and every plane's inlier count and length (plane i of `planes`).
@@ -26,5 +28,5 @@ inline namespace v1 {
 /// The figures without ground truth; components beyond the first 200 are counted, not listed.
 [[nodiscard]] LINESURF_API std::string ReportJson(const SurfaceQuality& quality);
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

@@ -9,7 +9,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 enum class LogLevel { kDebug, kInfo, kWarning, kError };
 
@@ -44,5 +44,5 @@ struct RunControl {
   LogSink* log = nullptr;
 };
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf

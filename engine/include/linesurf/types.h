@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v1 {
+inline namespace v2 {
 
 /// A point or direction (x, y, z), world coordinates.
 using Vector3 = std::array<double, 3>;
@@ -102,5 +102,5 @@ struct Mesh {
   }
 };
 
-}  // namespace v1
+}  // namespace v2
 }  // namespace linesurf
