@@ -26,6 +26,7 @@ pipeline::ReconstructOptions ToEngineOptions(const ReconstructOptions& options) 
   o.box_margin = options.box_margin;
   o.measure_quality = options.measure_quality;
   o.remove_floating_fragments = options.remove_floating_fragments;
+  o.repair_pinches = options.repair_pinches;
   o.quality = options.quality;
   o.triangulate = options.triangulate;
   o.merge_coplanar = options.merge_coplanar;

@@ -182,7 +182,10 @@ void WriteSurface(const SurfaceStats& s, Json& report) {
                              {"closed", s.mesh_closed},
                              {"manifold", s.mesh_manifold},
                              {"volume", s.mesh_volume},
-                             {"split_vertices", s.split_vertices}});
+                             {"split_vertices", s.split_vertices},
+                             {"pinch_cells_relabelled", s.pinch_cells_relabelled},
+                             {"split_points", s.split_points},
+                             {"pinch_energy_increase", s.pinch_energy_increase}});
 }
 
 void WriteFragments(const FragmentStats& s, Json& report) {

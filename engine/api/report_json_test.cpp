@@ -136,6 +136,9 @@ TEST(ReportJson, CountsOfEveryStageInStageOrder) {
                                       "manifold",
                                       "volume",
                                       "split_vertices",
+                                      "pinch_cells_relabelled",
+                                      "split_points",
+                                      "pinch_energy_increase",
                                       "removed_fragments",
                                       "removed_fragment_volume",
                                       "removed_fragment_segments"}));

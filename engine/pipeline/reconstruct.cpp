@@ -16,6 +16,7 @@
 #include "engine/pipeline/mesh_index_topology.h"
 #include "engine/pipeline/mesh_validity.h"
 #include "engine/pipeline/open_seams.h"
+#include "engine/pipeline/pinch_repair.h"
 #include "engine/pipeline/scene_box.h"
 #include "engine/pipeline/stage_stats.h"
 #include "engine/pipeline/stage_timer.h"
@@ -262,6 +263,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     const std::vector<std::uint32_t> block_of_cell = SolveBlocks(prepared, options.solver);
     const solver::LabelingResult labeling = ValueOrThrow(
         solver::SolveLabeling(evidence.energy, block_of_cell, options.solver, stage_ctx));
+    std::vector<std::uint8_t> labels = labeling.labels;
     stats.labeling = MakeLabelingStats(labeling);
 
     timer.Start("extract");
@@ -269,8 +271,14 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     extract.outside_full = interior;
     extract.triangulate = options.triangulate;
     extract.merge_coplanar = options.merge_coplanar;
-    BlockExtractResult surface = ValueOrThrow(
-        ExtractBlockSurface(prepared.blocks.complexes, labeling.labels, extract, stage_ctx));
+    PinchRepair repaired = ValueOrThrow(
+        ExtractWithoutPinches(prepared.blocks.complexes,
+                              evidence.energy,
+                              extract,
+                              options.repair_pinches ? kPinchRepairRounds : 0,
+                              labels,
+                              stage_ctx));
+    BlockExtractResult& surface = repaired.surface;
     const OpenSeamSurface open =
         MeasureOpenSeamSurface(prepared.blocks.complexes, surface.mesh, surface.face_facet);
     facts.open_seam_area = open.area;
@@ -280,8 +288,9 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     IndexTopology topology = CheckIndexTopology(result.mesh);
     timer.Stop();
 
-    facts.full_cells = stats.labeling.full_cells;
-    CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labeling.labels, facts);
+    facts.full_cells =
+        static_cast<std::size_t>(std::count(labels.begin(), labels.end(), std::uint8_t{1}));
+    CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labels, facts);
     const EnergyOptions& e = options.energy;
     facts.has_data_weight = e.weights.textural > 0.0 || e.weights.structural > 0.0 ||
                             e.weights.visibility > 0.0 || e.weights.viewpoint_prior > 0.0;
@@ -337,7 +346,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     result.memberships = scene.memberships;
     result.input_segment = prepared.input_segment;
 
-    stats.surface = MakeSurfaceStats(result.mesh, topology, surface.stats);
+    stats.surface = MakeSurfaceStats(result.mesh, topology, surface.stats, repaired.stats);
     std::vector<std::pair<std::string, double>> stages = prepared.stats.resources.stage_seconds;
     stages.insert(stages.end(), timer.Stages().begin(), timer.Stages().end());
     stats.resources = MakeResourceStats(std::move(stages));

@@ -89,6 +89,8 @@ struct ReconstructOptions {
   /// component holds more; RunStats::fragments counts them. Default true: pieces behind
   /// one or two lines (clutter, vegetation) are not the building (docs/design/reconstruction.md).
   bool remove_floating_fragments = true;
+  /// Repair the surface's pinches (pinch_repair.h, at most kPinchRepairRounds extractions more).
+  bool repair_pinches = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
   /// Neighbouring faces of one plane with one outward side (split by block faces

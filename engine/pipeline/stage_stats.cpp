@@ -108,13 +108,17 @@ LabelingStats MakeLabelingStats(const solver::LabelingResult& labeling) {
 
 SurfaceStats MakeSurfaceStats(const PolygonMesh& mesh,
                               const IndexTopology& topology,
-                              const ExtractStats& extraction) {
+                              const ExtractStats& extraction,
+                              const PinchRepairStats& repair) {
   return {.mesh_vertices = mesh.vertices.size(),
           .mesh_faces = mesh.NumFaces(),
           .mesh_closed = topology.closed,
           .mesh_manifold = topology.manifold,
           .mesh_volume = topology.signed_volume,
-          .split_vertices = extraction.split_vertices};
+          .split_vertices = extraction.split_vertices,
+          .pinch_cells_relabelled = repair.flipped_cells,
+          .split_points = repair.split_points,
+          .pinch_energy_increase = repair.energy_increase};
 }
 
 FragmentStats MakeFragmentStats(const FragmentRemoval& removal) {

@@ -14,6 +14,7 @@
 #include "engine/pipeline/extract_block_surface.h"
 #include "engine/pipeline/judge_result.h"
 #include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/pinch_repair.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/surface_quality.h"
 #include "solver/lp/lp_backend.h"
@@ -49,11 +50,12 @@ namespace linesurf::pipeline {
 /// The LP's size, the backend, its status and objectives, and the cells labelled full.
 [[nodiscard]] LabelingStats MakeLabelingStats(const solver::LabelingResult& labeling);
 
-/// The surface returned (`mesh`, its index topology) and the extraction's split vertices (of
-/// the labelling's surface, before fragments are removed).
+/// The surface returned (`mesh`, its index topology), the extraction's split vertices (of the
+/// labels' surface, before fragments are removed) and what the pinch repair changed.
 [[nodiscard]] SurfaceStats MakeSurfaceStats(const PolygonMesh& mesh,
                                             const IndexTopology& topology,
-                                            const ExtractStats& extraction);
+                                            const ExtractStats& extraction,
+                                            const PinchRepairStats& repair);
 
 /// The floating fragments RemoveFloatingFragments dropped.
 [[nodiscard]] FragmentStats MakeFragmentStats(const FragmentRemoval& removal);

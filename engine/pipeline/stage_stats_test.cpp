@@ -132,7 +132,7 @@ TEST(StageStats, SurfaceIsTheMeshReturnedWithTheExtractionsSplitVertices) {
   topology.signed_volume = -1.5;
   ExtractStats extraction;
   extraction.split_vertices = 4;
-  const SurfaceStats s = MakeSurfaceStats(mesh, topology, extraction);
+  const SurfaceStats s = MakeSurfaceStats(mesh, topology, extraction, {});
   EXPECT_EQ(s.mesh_vertices, 3u);
   EXPECT_EQ(s.mesh_faces, 1u);
   EXPECT_TRUE(s.mesh_closed);

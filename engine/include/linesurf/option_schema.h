@@ -264,6 +264,10 @@ void VisitOptions(O& o, Visit&& visit) {
   visit(OptionSpec{"remove_floating_fragments", "remove-fragments", kGroupOutput,
                    "Drop floating fragments when another component holds more supported lines", {}},
         o.remove_floating_fragments);
+  visit(OptionSpec{"repair_pinches", "repair-pinches", kGroupOutput,
+                   "Relabel the cheapest cell where parts meet only along an edge or at a point "
+                   "(one valid solid, no split vertices)", {}},
+        o.repair_pinches);
   visit(OptionSpec{"triangulate", "triangulate", kGroupOutput,
                    "Triangles instead of convex polygons", {}},
         o.triangulate);

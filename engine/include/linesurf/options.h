@@ -201,6 +201,11 @@ struct ReconstructOptions {
   /// quality.min_lines_per_component supported lines) when another component holds more;
   /// counted in ReconstructStats::fragments.
   bool remove_floating_fragments = true;
+  /// Where parts of the solid meet only along an edge or at a point, change the label of the
+  /// cell next to it whose change costs least, so that the surface is one valid solid for GIS
+  /// and BIM validators, not parts touching at split vertices (ReconstructStats::surface).
+  /// Default true.
+  bool repair_pinches = true;
   /// Triangulate the output faces (default: convex polygons).
   bool triangulate = false;
   /// Neighbouring faces of one plane with one outward side (split by block faces or by planes

@@ -167,6 +167,11 @@ struct SurfaceStats {
   bool mesh_manifold = false;
   double mesh_volume = 0.0;  ///< signed; positive for an exterior solid
   std::size_t split_vertices = 0;
+  /// The pinch repair (ReconstructOptions::repair_pinches): cells relabelled, positions still
+  /// held by several vertices, and the energy the relabelling added to the labelling's.
+  std::size_t pinch_cells_relabelled = 0;
+  std::size_t split_points = 0;
+  double pinch_energy_increase = 0.0;
 };
 
 /// Floating fragments removed from the surface (ReconstructOptions::remove_floating_fragments),
