@@ -17,12 +17,17 @@ def require_cli(test):
     del test
 
 
-def run_cli(*args):
-    """Runs `linesurf ARGS` and fails with its stderr when it exits non-zero."""
+def cli_process(*args):
+    """Runs `linesurf ARGS` and returns the completed process, whatever its exit."""
     # A sanitized build preloads the shared ASan runtime into python (CMakeLists.txt); the CLI
     # links its own, and two runtimes in one process abort.
     env = {k: v for k, v in os.environ.items() if k != "LD_PRELOAD"}
-    done = subprocess.run([CLI, *args], capture_output=True, text=True, check=False, env=env)
+    return subprocess.run([CLI, *args], capture_output=True, text=True, check=False, env=env)
+
+
+def run_cli(*args):
+    """Runs `linesurf ARGS` and fails with its stderr when it exits non-zero."""
+    done = cli_process(*args)
     if done.returncode != 0:
         raise AssertionError(f"linesurf {' '.join(args)} exited {done.returncode}: "
                              f"{done.stderr}")

@@ -5,7 +5,6 @@ import ctypes
 import json
 import os
 import re
-import subprocess
 import tempfile
 import unittest
 
@@ -96,9 +95,8 @@ class OptionNames(unittest.TestCase):
             bad_path = os.path.join(tmp, "bad.json")
             with open(bad_path, "w", encoding="utf-8") as f:
                 json.dump({"weights.visibilty": 1.0}, f)
-            done = subprocess.run([support.CLI, "reconstruct", support.HOUSE, "--config",
-                                   bad_path, "-o", os.path.join(tmp, "n.ply")],
-                                  capture_output=True, text=True, check=False)
+            done = support.cli_process("reconstruct", support.HOUSE, "--config", bad_path, "-o",
+                                       os.path.join(tmp, "n.ply"))
             self.assertEqual(done.returncode, 2, done.stderr)
             self.assertIn("'weights.visibilty' is not an option", done.stderr)
 
