@@ -55,31 +55,24 @@ std::int64_t EvaluateBatch(std::int64_t first,
 }
 }  // namespace
 
-CandidateSearch::CandidateSearch(std::span<const Segment3> segments,
-                                 const PlaneDetectionOptions& options,
-                                 double epsilon,
-                                 std::uint64_t seed,
-                                 const RunContext& ctx,
-                                 const SegmentBvh& bvh,
-                                 const std::vector<PlaneMembership>& memberships,
-                                 const InlierTest& inlier_test)
-    : segments_(segments),
-      options_(options),
-      epsilon_(epsilon),
+CandidateSearch::CandidateSearch(const RansacInput& in,
+                                 const RansacState& state,
+                                 const InlierTest& inlier_test,
+                                 std::uint64_t seed)
+    : in_(in),
+      state_(state),
+      inlier_test_(inlier_test),
       seed_(seed),
-      ctx_(ctx),
-      sin_pair_(std::sin(DegToRad(options.min_pair_angle_deg))),
-      bvh_(bvh),
-      memberships_(memberships),
-      inlier_test_(inlier_test) {
-  direction_.resize(segments_.size(), Vec3::Zero());
-  midpoint_.reserve(segments_.size());
-  for (const Segment3& seg : segments_) midpoint_.push_back(seg.Midpoint());
-  sampleable_.resize(segments_.size(), false);
-  for (std::size_t i = 0; i < segments_.size(); ++i) {
-    const Vec3 d = segments_[i].p2 - segments_[i].p1;
+      sin_pair_(std::sin(DegToRad(in.options.min_pair_angle_deg))) {
+  const std::span<const Segment3> segments = in_.segments;
+  direction_.resize(segments.size(), Vec3::Zero());
+  midpoint_.reserve(segments.size());
+  for (const Segment3& seg : segments) midpoint_.push_back(seg.Midpoint());
+  sampleable_.resize(segments.size(), false);
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const Vec3 d = segments[i].p2 - segments[i].p1;
     const double len = d.norm();
-    if (len > kMinSampleLengthOverEps * epsilon_) {
+    if (len > kMinSampleLengthOverEps * in_.epsilon) {
       direction_[i] = d / len;
       sampleable_[i] = true;
     }
@@ -87,14 +80,14 @@ CandidateSearch::CandidateSearch(std::span<const Segment3> segments,
 }
 
 bool CandidateSearch::Sampleable(SegmentId s) const {
-  const PlaneMembership& m = memberships_[s.index()];
+  const PlaneMembership& m = state_.memberships[s.index()];
   if (!sampleable_[s.index()] || m.count >= 2) return false;
-  return !(options_.single_support && m.count == 1);
+  return !(in_.options.single_support && m.count == 1);
 }
 
 std::vector<SegmentId> CandidateSearch::SamplingPool() const {
   std::vector<SegmentId> pool;
-  for (std::size_t i = 0; i < segments_.size(); ++i) {
+  for (std::size_t i = 0; i < in_.segments.size(); ++i) {
     if (Sampleable(SegmentId(i))) pool.emplace_back(i);
   }
   return pool;
@@ -102,8 +95,8 @@ std::vector<SegmentId> CandidateSearch::SamplingPool() const {
 
 std::optional<Plane3> CandidateSearch::PlaneFromPair(SegmentId a, SegmentId b, bool* apart) const {
   if (a == b) return std::nullopt;
-  const PlaneMembership& ma = memberships_[a.index()];
-  const PlaneMembership& mb = memberships_[b.index()];
+  const PlaneMembership& ma = state_.memberships[a.index()];
+  const PlaneMembership& mb = state_.memberships[b.index()];
   for (std::uint8_t i = 0; i < ma.count; ++i) {
     if (mb.Contains(ma.planes[i])) return std::nullopt;
   }
@@ -116,7 +109,7 @@ std::optional<Plane3> CandidateSearch::PlaneFromPair(SegmentId a, SegmentId b, b
   const Vec3& mid_a = midpoint_[a.index()];
   const Vec3& mid_b = midpoint_[b.index()];
   const double gap = cross.dot(mid_a - mid_b);
-  if (gap * gap > kCheapRejectGrow * 4.0 * epsilon_ * epsilon_ * sin2) {
+  if (gap * gap > kCheapRejectGrow * 4.0 * in_.epsilon * in_.epsilon * sin2) {
     if (apart != nullptr && sin2 >= sin_pair_ * sin_pair_) *apart = true;
     return std::nullopt;
   }
@@ -124,7 +117,7 @@ std::optional<Plane3> CandidateSearch::PlaneFromPair(SegmentId a, SegmentId b, b
   if (sin < sin_pair_) return std::nullopt;
   Plane3 plane;
   plane.normal = cross / sin;
-  if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * epsilon_) {
+  if (std::abs(plane.normal.dot(mid_a - mid_b)) > 2.0 * in_.epsilon) {
     if (apart != nullptr) *apart = true;
     return std::nullopt;
   }
@@ -137,16 +130,16 @@ CandidateResult CandidateSearch::RandomCandidate(const std::vector<SegmentId>& p
                                                  std::int64_t k) const {
   CandidateResult result;
   Rng rng(MixSeed(seed_, RngStage::kDetect, plane_index, static_cast<std::uint64_t>(k)));
-  const auto& order = bvh_.Order();
-  const auto window = static_cast<std::int64_t>(options_.near_window);
+  const auto& order = state_.bvh.Order();
+  const auto window = static_cast<std::int64_t>(in_.options.near_window);
   const auto n = static_cast<std::int64_t>(order.size());
-  for (std::int32_t attempt = 0; attempt < options_.max_draws_per_candidate; ++attempt) {
+  for (std::int32_t attempt = 0; attempt < in_.options.max_draws_per_candidate; ++attempt) {
     const SegmentId a = pool[rng.Below(pool.size())];
     SegmentId b;
-    if (rng.Uniform() < options_.near_fraction) {
+    if (rng.Uniform() < in_.options.near_fraction) {
       std::int64_t offset = static_cast<std::int64_t>(rng.Below(2 * window)) - window;
       if (offset >= 0) ++offset;  // in [-window, window] \ {0}
-      const std::int64_t pos = std::clamp<std::int64_t>(bvh_.PositionOf(a) + offset, 0, n - 1);
+      const std::int64_t pos = std::clamp<std::int64_t>(state_.bvh.PositionOf(a) + offset, 0, n - 1);
       b = order[static_cast<std::size_t>(pos)];
       if (!Sampleable(b)) {
         ++result.failed_draws;
@@ -172,11 +165,12 @@ CandidateResult CandidateSearch::RandomCandidate(const std::vector<SegmentId>& p
 
 std::optional<CandidateResult> CandidateSearch::SearchPlane(const std::vector<SegmentId>& pool,
                                                             std::size_t plane_index,
+                                                            const RunContext& ctx,
                                                             PlaneDetectionStats& stats) const {
-  if (pool.size() <= static_cast<std::size_t>(options_.exhaustive_pairs_max_segments)) {
+  if (pool.size() <= static_cast<std::size_t>(in_.options.exhaustive_pairs_max_segments)) {
     return SearchAllPairs(pool, stats);
   }
-  return SearchRandom(pool, plane_index, stats);
+  return SearchRandom(pool, plane_index, ctx, stats);
 }
 
 std::optional<CandidateResult> CandidateSearch::SearchAllPairs(const std::vector<SegmentId>& pool,
@@ -207,13 +201,14 @@ std::optional<CandidateResult> CandidateSearch::SearchAllPairs(const std::vector
 
 std::optional<CandidateResult> CandidateSearch::SearchRandom(const std::vector<SegmentId>& pool,
                                                              std::size_t plane_index,
+                                                             const RunContext& ctx,
                                                              PlaneDetectionStats& stats) const {
   std::optional<CandidateResult> best;
   std::int64_t done = 0;
   const std::int64_t failed_before = stats.failed_draws;
   std::int64_t trials = 0;
-  while (done < options_.iterations) {
-    const std::int64_t count = std::min(kBatchSize, options_.iterations - done);
+  while (done < in_.options.iterations) {
+    const std::int64_t count = std::min(kBatchSize, in_.options.iterations - done);
     trials += EvaluateBatch(
         done,
         count,
@@ -221,9 +216,9 @@ std::optional<CandidateResult> CandidateSearch::SearchRandom(const std::vector<S
         best,
         stats);
     done += count;
-    if (stats.failed_draws - failed_before >= options_.max_failed_draws) break;
-    if (best && done >= options_.min_iterations && ConfidentOf(*best, pool.size(), trials)) break;
-    ctx_.ThrowIfCancelled(kDetectPlanesStage);
+    if (stats.failed_draws - failed_before >= in_.options.max_failed_draws) break;
+    if (best && done >= in_.options.min_iterations && ConfidentOf(*best, pool.size(), trials)) break;
+    ctx.ThrowIfCancelled(kDetectPlanesStage);
   }
   return best;
 }
@@ -231,15 +226,15 @@ std::optional<CandidateResult> CandidateSearch::SearchRandom(const std::vector<S
 bool CandidateSearch::ConfidentOf(const CandidateResult& best,
                                   std::size_t pool_size,
                                   std::int64_t trials) const {
-  const double log_miss = std::log(1.0 - options_.confidence);
+  const double log_miss = std::log(1.0 - in_.options.confidence);
   const double n = static_cast<double>(pool_size);
-  const double window = 2.0 * options_.near_window;
+  const double window = 2.0 * in_.options.near_window;
   // Probability that one draw hits the best plane: the first segment on it, then the second on
   // it too (near draw: the plane fills the window up to its support).
   const double s = best.support;
   const double p_first = std::min(1.0, s / n);
-  const double p_second = options_.near_fraction * std::min(1.0, s / window) +
-                          (1.0 - options_.near_fraction) * p_first;
+  const double p_second = in_.options.near_fraction * std::min(1.0, s / window) +
+                          (1.0 - in_.options.near_fraction) * p_first;
   const double w = p_first * p_second;
   if (w >= 1.0) return true;
   const double needed = log_miss / std::log1p(-w);

@@ -6,16 +6,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "engine/core/geometry.h"
 #include "engine/core/run_context.h"
-#include "engine/core/scene.h"
 #include "engine/core/strong_id.h"
-#include "engine/detect/detect_planes.h"
 #include "engine/detect/inlier_test.h"
-#include "engine/detect/segment_bvh.h"
+#include "engine/detect/ransac_state.h"
 
 namespace linesurf::detect {
 
@@ -30,19 +27,15 @@ struct CandidateResult {
   Plane3 plane;
 };
 
-/// Proposes and scores candidate planes for one detection; reads its memberships as they are
-/// when called. Deterministic for any number of threads: candidate k of plane j draws from its
+/// Proposes and scores candidate planes for one detection. Deterministic for any number of threads: candidate k of plane j draws from its
 /// own stream and the best is chosen by (score, then smallest k).
 class CandidateSearch {
  public:
-  CandidateSearch(std::span<const Segment3> segments,
-                  const PlaneDetectionOptions& options,
-                  double epsilon,
-                  std::uint64_t seed,
-                  const RunContext& ctx,
-                  const SegmentBvh& bvh,
-                  const std::vector<PlaneMembership>& memberships,
-                  const InlierTest& inlier_test);
+  /// Candidates of plane j draw from the streams (seed, j, k).
+  CandidateSearch(const RansacInput& in,
+                  const RansacState& state,
+                  const InlierTest& inlier_test,
+                  std::uint64_t seed);
 
   /// The segments candidates may be drawn from, ascending.
   [[nodiscard]] std::vector<SegmentId> SamplingPool() const;
@@ -50,6 +43,7 @@ class CandidateSearch {
   /// The best candidate for plane `plane_index` from `pool`, if any was valid.
   [[nodiscard]] std::optional<CandidateResult> SearchPlane(const std::vector<SegmentId>& pool,
                                                            std::size_t plane_index,
+                                                           const RunContext& ctx,
                                                            PlaneDetectionStats& stats) const;
 
  private:
@@ -76,6 +70,7 @@ class CandidateSearch {
   /// failed draws.
   [[nodiscard]] std::optional<CandidateResult> SearchRandom(const std::vector<SegmentId>& pool,
                                                             std::size_t plane_index,
+                                                            const RunContext& ctx,
                                                             PlaneDetectionStats& stats) const;
 
   /// Whether `trials` trials give the confidence of having drawn the plane of `best` once.
@@ -83,15 +78,11 @@ class CandidateSearch {
                                  std::size_t pool_size,
                                  std::int64_t trials) const;
 
-  std::span<const Segment3> segments_;
-  const PlaneDetectionOptions& options_;
-  double epsilon_;
-  std::uint64_t seed_;
-  const RunContext& ctx_;
-  double sin_pair_;
-  const SegmentBvh& bvh_;
-  const std::vector<PlaneMembership>& memberships_;
+  RansacInput in_;
+  RansacState state_;
   const InlierTest& inlier_test_;
+  std::uint64_t seed_;
+  double sin_pair_;
   std::vector<Vec3> direction_;
   std::vector<Vec3> midpoint_;
   std::vector<bool> sampleable_;

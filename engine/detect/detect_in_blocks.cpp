@@ -99,12 +99,9 @@ void RunBlock(const BlockDetectionInput& in,
   }
   const std::uint64_t seed =
       single ? in.options.seed : MixSeed(in.options.seed, RngStage::kDetect, kBlockStream, r);
-  RansacDetector detector(single ? in.lines : std::span<const Segment3>(local),
-                          in.options,
-                          in.epsilon,
-                          seed,
-                          plane_progress,
-                          in.ctx);
+  const RansacInput ransac{
+      single ? in.lines : std::span<const Segment3>(local), in.options, in.epsilon};
+  RansacDetector detector(ransac, seed, plane_progress, in.ctx);
   detector.ExtractAll(run.stats);
   if (run.stats.capped_blocks > 0 && SplitAtCap(run.block, in.layout, in.options)) {
     run.children =

@@ -3,31 +3,21 @@
 // engine/detect).
 
 #include <cstdint>
-#include <span>
 #include <utility>
 #include <vector>
 
 #include "engine/core/geometry.h"
-#include "engine/core/scene.h"
 #include "engine/core/strong_id.h"
-#include "engine/detect/detect_planes.h"
-#include "engine/detect/plane_fusion.h"
-#include "engine/detect/segment_bvh.h"
+#include "engine/detect/ransac_state.h"
 
 namespace linesurf::detect {
 
 /// Which segments may join a plane and how far they are: a free segment by its distance to the
 /// plane (textural), a segment already on one plane by its distance to the crease of the two
-/// (structural), a segment on two planes never. Reads the memberships and planes of the
-/// detection that owns it, as they are when called.
+/// (structural), a segment on two planes never.
 class InlierTest {
  public:
-  InlierTest(std::span<const Segment3> segments,
-             const PlaneDetectionOptions& options,
-             double epsilon,
-             const SegmentBvh& bvh,
-             const std::vector<PlaneMembership>& memberships,
-             const std::vector<SupportedPlane>& planes);
+  InlierTest(const RansacInput& in, const RansacState& state);
 
   /// Distance of `s` to `plane` under the inlier test that applies to it (textural or
   /// structural), or a negative value when `s` cannot join `plane`.
@@ -43,14 +33,10 @@ class InlierTest {
   [[nodiscard]] std::vector<SegmentId> Collect(const Plane3& plane) const;
 
  private:
-  std::span<const Segment3> segments_;
-  const PlaneDetectionOptions& options_;
-  double epsilon_;
+  RansacInput in_;
+  RansacState state_;
   double slab_;
   double sin_crease_;
-  const SegmentBvh& bvh_;
-  const std::vector<PlaneMembership>& memberships_;
-  const std::vector<SupportedPlane>& planes_;
 };
 
 }  // namespace linesurf::detect

@@ -47,49 +47,45 @@ std::vector<SegmentId> PieceOverlappingMost(std::vector<std::vector<SegmentId>> 
 }
 }  // namespace
 
-RansacDetector::RansacDetector(std::span<const Segment3> segments,
-                               const PlaneDetectionOptions& options,
-                               double epsilon,
+RansacDetector::RansacDetector(const RansacInput& in,
                                std::uint64_t seed,
                                bool report_progress,
                                const RunContext& ctx)
-    : segments_(segments),
-      options_(options),
+    : in_(in),
       report_progress_(report_progress),
       ctx_(ctx),
-      epsilon_(epsilon),
-      memberships_(segments_.size()),
-      bvh_(segments_),
-      support_gap_(options.support_gap * MedianLength(segments)),
-      inlier_test_(segments_, options_, epsilon_, bvh_, memberships_, planes_),
-      search_(segments_, options_, epsilon_, seed, ctx_, bvh_, memberships_, inlier_test_) {}
+      memberships_(in.segments.size()),
+      bvh_(in.segments),
+      support_gap_(in.options.support_gap * MedianLength(in.segments)),
+      inlier_test_(in_, RansacState{bvh_, memberships_, planes_}),
+      search_(in_, RansacState{bvh_, memberships_, planes_}, inlier_test_, seed) {}
 
 void RansacDetector::ExtractAll(PlaneDetectionStats& stats) {
-  while (static_cast<std::int32_t>(planes_.size()) < options_.max_planes) {
+  while (static_cast<std::int32_t>(planes_.size()) < in_.options.max_planes) {
     ctx_.ThrowIfCancelled(kDetectPlanesStage);
     if (report_progress_) {
       ctx_.ReportProgress(kDetectPlanesStage,
-                          static_cast<double>(planes_.size()) / options_.max_planes);
+                          static_cast<double>(planes_.size()) / in_.options.max_planes);
     }
     const std::vector<SegmentId> pool = search_.SamplingPool();
     if (pool.size() < 2) break;
-    const std::optional<CandidateResult> best = search_.SearchPlane(pool, planes_.size(), stats);
-    if (!best || best->support < static_cast<std::uint32_t>(options_.min_support)) break;
+    const std::optional<CandidateResult> best = search_.SearchPlane(pool, planes_.size(), ctx_, stats);
+    if (!best || best->support < static_cast<std::uint32_t>(in_.options.min_support)) break;
     Plane3 plane = best->plane;
     std::vector<SegmentId> inliers = inlier_test_.Collect(plane);
     Refit(plane, inliers);
     KeepOnePiece(plane, inliers);
-    if (inliers.size() < static_cast<std::size_t>(options_.min_support)) break;
+    if (inliers.size() < static_cast<std::size_t>(in_.options.min_support)) break;
     const PlaneId id(planes_.size());
     for (const SegmentId s : inliers) memberships_[s.index()].Add(id);
     planes_.push_back({plane, std::move(inliers)});
   }
-  if (static_cast<std::int32_t>(planes_.size()) >= options_.max_planes) stats.capped_blocks = 1;
+  if (static_cast<std::int32_t>(planes_.size()) >= in_.options.max_planes) stats.capped_blocks = 1;
 }
 
 void RansacDetector::Refit(Plane3& plane, std::vector<SegmentId>& inliers) const {
-  for (std::int32_t it = 0; it < options_.max_refit_iterations; ++it) {
-    const Plane3 refit = FitPlane(segments_, inliers, plane.normal);
+  for (std::int32_t it = 0; it < in_.options.max_refit_iterations; ++it) {
+    const Plane3 refit = FitPlane(in_.segments, inliers, plane.normal);
     std::vector<SegmentId> again = inlier_test_.Collect(refit);
     if (again.size() < inliers.size()) break;  // the refit lost support: keep the previous
     const bool stable = again == inliers;
@@ -101,19 +97,19 @@ void RansacDetector::Refit(Plane3& plane, std::vector<SegmentId>& inliers) const
 
 void RansacDetector::KeepOnePiece(Plane3& plane, std::vector<SegmentId>& inliers) const {
   if (support_gap_ <= 0.0) return;
-  const auto min_lines = static_cast<std::size_t>(options_.min_support);
-  std::vector<std::vector<SegmentId>> pieces = SupportClusters(segments_, inliers, support_gap_);
+  const auto min_lines = static_cast<std::size_t>(in_.options.min_support);
+  std::vector<std::vector<SegmentId>> pieces = SupportClusters(in_.segments, inliers, support_gap_);
   if (pieces.size() < 2 || pieces[0].size() < min_lines ||
-      !PiecesDisagree(segments_, pieces, plane, min_lines, kPieceMinWidthOverEps * epsilon_,
-                      kPieceDisagreementOverEps * epsilon_)) {
+      !PiecesDisagree(in_.segments, pieces, plane, min_lines, kPieceMinWidthOverEps * in_.epsilon,
+                      kPieceDisagreementOverEps * in_.epsilon)) {
     return;
   }
   std::vector<SegmentId> kept = std::move(pieces[0]);
-  Plane3 fitted = FitPlane(segments_, kept, plane.normal);
-  for (std::int32_t it = 0; it < options_.max_refit_iterations; ++it) {
-    const Plane3 refit = FitPlane(segments_, kept, fitted.normal);
+  Plane3 fitted = FitPlane(in_.segments, kept, plane.normal);
+  for (std::int32_t it = 0; it < in_.options.max_refit_iterations; ++it) {
+    const Plane3 refit = FitPlane(in_.segments, kept, fitted.normal);
     std::vector<SegmentId> best = PieceOverlappingMost(
-        SupportClusters(segments_, inlier_test_.Collect(refit), support_gap_), kept);
+        SupportClusters(in_.segments, inlier_test_.Collect(refit), support_gap_), kept);
     if (best.size() < kept.size()) break;  // the refit lost support: keep the previous
     const bool stable = best == kept;
     fitted = refit;

@@ -3,18 +3,14 @@
 // refitted and kept to one piece of its support (internal to engine/detect).
 
 #include <cstdint>
-#include <span>
 #include <vector>
 
 #include "engine/core/geometry.h"
 #include "engine/core/run_context.h"
-#include "engine/core/scene.h"
 #include "engine/core/strong_id.h"
 #include "engine/detect/candidate_search.h"
-#include "engine/detect/detect_planes.h"
 #include "engine/detect/inlier_test.h"
-#include "engine/detect/plane_fusion.h"
-#include "engine/detect/segment_bvh.h"
+#include "engine/detect/ransac_state.h"
 
 namespace linesurf::detect {
 
@@ -22,9 +18,7 @@ class RansacDetector {
  public:
   /// `seed` replaces options.seed (per-block streams); `report_progress` is off when blocks run
   /// concurrently (they report per block instead).
-  RansacDetector(std::span<const Segment3> segments,
-                 const PlaneDetectionOptions& options,
-                 double epsilon,
+  RansacDetector(const RansacInput& in,
                  std::uint64_t seed,
                  bool report_progress,
                  const RunContext& ctx);
@@ -46,11 +40,9 @@ class RansacDetector {
   /// min_support leaves the plane as it was.
   void KeepOnePiece(Plane3& plane, std::vector<SegmentId>& inliers) const;
 
-  std::span<const Segment3> segments_;
-  const PlaneDetectionOptions& options_;
+  RansacInput in_;
   bool report_progress_;
   const RunContext& ctx_;
-  double epsilon_;
   std::vector<PlaneMembership> memberships_;
   SegmentBvh bvh_;
   double support_gap_;  ///< scene units; 0 = a plane's support may come in pieces
