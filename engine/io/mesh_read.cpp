@@ -1,5 +1,6 @@
 // Mesh readers: PLY (ascii, binary little/big endian), OBJ, OFF.
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -283,15 +284,42 @@ class PlyValues {
   std::string where_;
 };
 
-PolygonMesh ReadPly(std::string_view text, const std::string& file) {
+/// A PLY header: the format, the elements, and where the body starts.
+struct PlyHeader {
+  bool ascii = false;
+  bool big_endian = false;
+  std::vector<PlyElement> elements;
+  std::size_t body_offset = 0;  ///< of the first byte after end_header
+  std::size_t body_line = 0;    ///< line number of end_header
+};
+
+/// One `property` declaration (scalar or list); fails on an unsupported one.
+PlyProperty ParsePlyProperty(const std::vector<std::string_view>& tokens,
+                             const std::string& file,
+                             const std::string& where) {
+  PlyProperty prop;
+  bool ok = false;
+  if (tokens.size() == 5 && tokens[1] == "list") {
+    prop.is_list = true;
+    ok = ParsePlyType(tokens[2], prop.count_type) && ParsePlyType(tokens[3], prop.type);
+    prop.name = tokens[4];
+  } else if (tokens.size() == 3) {
+    ok = ParsePlyType(tokens[1], prop.type);
+    prop.name = tokens[2];
+  }
+  LINESURF_MESH_FAIL_IF(!ok, where, "unsupported property declaration");
+  return prop;
+}
+
+PlyHeader ReadPlyHeader(std::string_view text, const std::string& file) {
   LineReader header(text);
   std::vector<std::string_view> tokens;
   LINESURF_THROW_IF(!header.Next(tokens) || tokens.size() != 1 || tokens[0] != "ply",
                     kInvalidInput,
                     kMeshReadStage,
                     file << ": line 1: expected 'ply'");
-  bool ascii = false, big_endian = false, have_format = false, have_end = false;
-  std::vector<PlyElement> elements;
+  PlyHeader result;
+  bool have_format = false, have_end = false;
   while (header.Next(tokens)) {
     const std::string where = "line " + std::to_string(header.line_number());
     if (tokens.empty() || tokens[0] == "comment" || tokens[0] == "obj_info") continue;
@@ -301,30 +329,22 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
     }
     if (tokens[0] == "format") {
       LINESURF_MESH_FAIL_IF(tokens.size() < 2, where, "format without a name");
-      ascii = tokens[1] == "ascii";
-      big_endian = tokens[1] == "binary_big_endian";
-      LINESURF_MESH_FAIL_IF(!ascii && !big_endian && tokens[1] != "binary_little_endian", where,
+      result.ascii = tokens[1] == "ascii";
+      result.big_endian = tokens[1] == "binary_big_endian";
+      LINESURF_MESH_FAIL_IF(!result.ascii && !result.big_endian &&
+                                tokens[1] != "binary_little_endian",
+                            where,
                             "unknown format '" << tokens[1] << "'");
       have_format = true;
     } else if (tokens[0] == "element") {
       long long count = 0;
       LINESURF_MESH_FAIL_IF(tokens.size() != 3 || !ParseInt(tokens[2], count) || count < 0, where,
                             "expected 'element <name> <count>'");
-      elements.push_back(PlyElement{std::string(tokens[1]), static_cast<std::size_t>(count), {}});
+      result.elements.push_back(
+          PlyElement{std::string(tokens[1]), static_cast<std::size_t>(count), {}});
     } else if (tokens[0] == "property") {
-      LINESURF_MESH_FAIL_IF(elements.empty(), where, "property before any element");
-      PlyProperty prop;
-      bool ok = false;
-      if (tokens.size() == 5 && tokens[1] == "list") {
-        prop.is_list = true;
-        ok = ParsePlyType(tokens[2], prop.count_type) && ParsePlyType(tokens[3], prop.type);
-        prop.name = tokens[4];
-      } else if (tokens.size() == 3) {
-        ok = ParsePlyType(tokens[1], prop.type);
-        prop.name = tokens[2];
-      }
-      LINESURF_MESH_FAIL_IF(!ok, where, "unsupported property declaration");
-      elements.back().properties.push_back(prop);
+      LINESURF_MESH_FAIL_IF(result.elements.empty(), where, "property before any element");
+      result.elements.back().properties.push_back(ParsePlyProperty(tokens, file, where));
     } else {
       LINESURF_MESH_FAIL_IF(true, where, "unknown header keyword '" << tokens[0] << "'");
     }
@@ -333,74 +353,100 @@ PolygonMesh ReadPly(std::string_view text, const std::string& file) {
                     kInvalidInput,
                     kMeshReadStage,
                     file << ": incomplete PLY header (no format or end_header)");
-  PolygonMesh mesh;
-  PlyValues values(text.substr(header.position() > text.size() ? text.size() : header.position()),
-                   ascii, big_endian, header.line_number());
-  std::vector<std::uint32_t> face;
-  for (const PlyElement& element : elements) {
-    int axis[3] = {-1, -1, -1};
-    int list_index = -1;
-    for (std::size_t p = 0; p < element.properties.size(); ++p) {
-      const PlyProperty& prop = element.properties[p];
-      if (!prop.is_list && prop.name.size() == 1 && prop.name[0] >= 'x' && prop.name[0] <= 'z') {
-        axis[prop.name[0] - 'x'] = static_cast<int>(p);
-      }
-      if (prop.is_list && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
-        list_index = static_cast<int>(p);
-      }
+  result.body_offset = header.position() > text.size() ? text.size() : header.position();
+  result.body_line = header.line_number();
+  return result;
+}
+
+/// Which properties of an element the mesh reads: the x, y, z scalars and the vertex index list
+/// (-1 where absent).
+struct PlyLayout {
+  std::array<int, 3> axis = {-1, -1, -1};
+  int list_index = -1;
+};
+
+PlyLayout LayoutOf(const PlyElement& element) {
+  PlyLayout layout;
+  for (std::size_t p = 0; p < element.properties.size(); ++p) {
+    const PlyProperty& prop = element.properties[p];
+    if (!prop.is_list && prop.name.size() == 1 && prop.name[0] >= 'x' && prop.name[0] <= 'z') {
+      layout.axis[prop.name[0] - 'x'] = static_cast<int>(p);
     }
-    const bool is_vertex = element.name == "vertex";
-    const bool is_face = element.name == "face";
-    LINESURF_THROW_IF(is_vertex && (axis[0] < 0 || axis[1] < 0 || axis[2] < 0),
-                      kInvalidInput,
-                      kMeshReadStage,
-                      file << ": element vertex lacks an x, y or z property");
-    LINESURF_THROW_IF(is_face && list_index < 0,
-                      kInvalidInput,
-                      kMeshReadStage,
-                      file << ": element face lacks a vertex_indices list");
-    // An element without properties has no bytes to read: its count, up to 2^63, would only
-    // spin (found by fuzzing: `element vertey 99999990`).
-    if (element.properties.empty()) continue;
-    for (std::size_t i = 0; i < element.count; ++i) {
-      const std::string where = element.name + " " + std::to_string(i);
-      values.BeginItem(file, where);
-      Vec3 v = Vec3::Zero();
-      face.clear();
-      for (std::size_t p = 0; p < element.properties.size(); ++p) {
-        const PlyProperty& prop = element.properties[p];
-        double value = 0.0;
-        if (!prop.is_list) {
-          values.Read(prop.type, value, file, where);
-          for (int k = 0; k < 3; ++k) {
-            if (is_vertex && axis[k] == static_cast<int>(p)) v[k] = value;
-          }
-          continue;
-        }
-        values.Read(prop.count_type, value, file, where);
-        LINESURF_MESH_FAIL_IF(!(value >= 0.0) || value > 1e9, where, "bad list length " << value);
-        const auto n = static_cast<std::size_t>(value);
-        const bool is_indices = is_face && list_index == static_cast<int>(p);
-        for (std::size_t k = 0; k < n; ++k) {
-          values.Read(prop.type, value, file, where);
-          if (is_indices) {
-            LINESURF_MESH_FAIL_IF(!(value >= 0.0) || value > 4294967294.0, where,
-                                  "vertex index " << value << " out of range");
-            face.push_back(static_cast<std::uint32_t>(value));
-          }
-        }
-      }
-      if (is_vertex) {
-        LINESURF_MESH_FAIL_IF(!v.allFinite(), where, "non-finite coordinate");
-        mesh.vertices.push_back(v);
-      }
-      if (is_face) {
-        LINESURF_MESH_FAIL_IF(face.size() < 3, where,
-                              "a face needs at least 3 vertices, got " << face.size());
-        mesh.AddFace(face);
-      }
+    if (prop.is_list && (prop.name == "vertex_indices" || prop.name == "vertex_index")) {
+      layout.list_index = static_cast<int>(p);
     }
   }
+  return layout;
+}
+
+/// Reads the items of `element` from `values`, adding vertices and faces to `mesh`; skips the
+/// items of other elements.
+void ReadPlyElement(const PlyElement& element,
+                    const std::string& file,
+                    PlyValues& values,
+                    PolygonMesh& mesh) {
+  const PlyLayout layout = LayoutOf(element);
+  const bool is_vertex = element.name == "vertex";
+  const bool is_face = element.name == "face";
+  LINESURF_THROW_IF(
+      is_vertex && (layout.axis[0] < 0 || layout.axis[1] < 0 || layout.axis[2] < 0),
+      kInvalidInput,
+      kMeshReadStage,
+      file << ": element vertex lacks an x, y or z property");
+  LINESURF_THROW_IF(is_face && layout.list_index < 0,
+                    kInvalidInput,
+                    kMeshReadStage,
+                    file << ": element face lacks a vertex_indices list");
+  // An element without properties has no bytes to read: its count, up to 2^63, would only
+  // spin (found by fuzzing: `element vertey 99999990`).
+  if (element.properties.empty()) return;
+  std::vector<std::uint32_t> face;
+  for (std::size_t i = 0; i < element.count; ++i) {
+    const std::string where = element.name + " " + std::to_string(i);
+    values.BeginItem(file, where);
+    Vec3 v = Vec3::Zero();
+    face.clear();
+    for (std::size_t p = 0; p < element.properties.size(); ++p) {
+      const PlyProperty& prop = element.properties[p];
+      double value = 0.0;
+      if (!prop.is_list) {
+        values.Read(prop.type, value, file, where);
+        for (int k = 0; k < 3; ++k) {
+          if (is_vertex && layout.axis[k] == static_cast<int>(p)) v[k] = value;
+        }
+        continue;
+      }
+      values.Read(prop.count_type, value, file, where);
+      LINESURF_MESH_FAIL_IF(!(value >= 0.0) || value > 1e9, where, "bad list length " << value);
+      const auto n = static_cast<std::size_t>(value);
+      const bool is_indices = is_face && layout.list_index == static_cast<int>(p);
+      for (std::size_t k = 0; k < n; ++k) {
+        values.Read(prop.type, value, file, where);
+        if (is_indices) {
+          LINESURF_MESH_FAIL_IF(!(value >= 0.0) || value > 4294967294.0, where,
+                                "vertex index " << value << " out of range");
+          face.push_back(static_cast<std::uint32_t>(value));
+        }
+      }
+    }
+    if (is_vertex) {
+      LINESURF_MESH_FAIL_IF(!v.allFinite(), where, "non-finite coordinate");
+      mesh.vertices.push_back(v);
+    }
+    if (is_face) {
+      LINESURF_MESH_FAIL_IF(face.size() < 3, where,
+                            "a face needs at least 3 vertices, got " << face.size());
+      mesh.AddFace(face);
+    }
+  }
+}
+
+PolygonMesh ReadPly(std::string_view text, const std::string& file) {
+  const PlyHeader header = ReadPlyHeader(text, file);
+  PolygonMesh mesh;
+  PlyValues values(text.substr(header.body_offset), header.ascii, header.big_endian,
+                   header.body_line);
+  for (const PlyElement& element : header.elements) ReadPlyElement(element, file, values, mesh);
   return mesh;
 }
 

@@ -122,7 +122,8 @@ std::pair<bool, bool> FlatAndPlanar(const PolygonMesh& mesh,
   return {flat, planar};
 }
 
-MeshValidity Check(const PolygonMesh& mesh) {
+/// Every face offset and index is in range.
+void CheckIndices(const PolygonMesh& mesh) {
   const std::size_t num_vertices = mesh.vertices.size();
   LINESURF_THROW_IF(mesh.face_offsets.empty() || mesh.face_offsets.front() != 0 ||
                         mesh.face_offsets.back() != mesh.face_indices.size(),
@@ -136,13 +137,12 @@ MeshValidity Check(const PolygonMesh& mesh) {
                       "face index " << i << " refers to vertex " << mesh.face_indices[i] << " of "
                                     << num_vertices);
   }
-  MeshValidity topo;
-  topo.num_faces = mesh.NumFaces();
-  topo.num_vertices = mesh.vertices.size();
-  topo.num_coincident_vertices = CountCoincidentVertices(mesh);
+}
 
-  // Faces by vertex index; those with fewer than 3 distinct vertices or a repeated vertex are degenerate
-  // and take no part in the checks.
+/// Faces by vertex index (consecutive repeats folded); those with fewer than 3 distinct vertices
+/// or a repeated vertex are degenerate, counted in `topo`, and take no part in the checks.
+std::vector<std::vector<std::size_t>> NonDegenerateFaces(const PolygonMesh& mesh,
+                                                         MeshValidity& topo) {
   std::vector<std::vector<std::size_t>> faces;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     std::vector<std::size_t> face;
@@ -158,11 +158,16 @@ MeshValidity Check(const PolygonMesh& mesh) {
     }
     faces.push_back(std::move(face));
   }
+  return faces;
+}
 
+/// Counts the zero-area and non-planar faces in `topo`; returns the faces with area (zero-area
+/// faces cannot be triangulated for the self-intersection test: they sit it out).
+std::vector<std::vector<std::size_t>> FacesWithArea(
+    const PolygonMesh& mesh, const std::vector<std::vector<std::size_t>>& faces, MeshValidity& topo) {
   Box3 box;
   for (const Vec3& p : mesh.vertices) box.Extend(p);
   const double tolerance = box.IsEmpty() ? 0.0 : kFlatRelative * box.Extent().norm();
-  // Zero-area faces cannot be triangulated for the self-intersection test: they sit it out.
   std::vector<std::vector<std::size_t>> with_area;
   for (const auto& face : faces) {
     const auto [flat, planar] = FlatAndPlanar(mesh, face, tolerance);
@@ -170,10 +175,15 @@ MeshValidity Check(const PolygonMesh& mesh) {
     topo.num_non_planar_faces += planar ? 0 : 1;
     if (!flat) with_area.push_back(face);
   }
+  return with_area;
+}
 
-  // Area and signed volume over a fan triangulation: a planar face's area is the length of the
-  // sum of its fan's vector areas, convex or not (merged faces are not), and the volume is exact
-  // for any closed polygon mesh because the fan's inner edges cancel.
+/// Area and signed volume over a fan triangulation: a planar face's area is the length of the
+/// sum of its fan's vector areas, convex or not (merged faces are not), and the volume is exact
+/// for any closed polygon mesh because the fan's inner edges cancel.
+void AddAreaAndVolume(const PolygonMesh& mesh,
+                      const std::vector<std::vector<std::size_t>>& faces,
+                      MeshValidity& topo) {
   for (const auto& face : faces) {
     const Vec3& a = mesh.vertices[face[0]];
     for (std::size_t k = 1; k + 1 < face.size(); ++k) {
@@ -183,7 +193,11 @@ MeshValidity Check(const PolygonMesh& mesh) {
                          return mesh.vertices[face[k]];
                        }).norm();
   }
+}
 
+/// Counts boundary and non-manifold edges and the connected components in `topo`; returns
+/// whether every edge used twice is used once in each direction.
+bool CheckEdges(const std::vector<std::vector<std::size_t>>& faces, MeshValidity& topo) {
   // Directed edges (lo, hi, forward, face) sorted: groups are undirected edges.
   struct HalfEdge {
     std::size_t lo, hi;
@@ -217,8 +231,12 @@ MeshValidity Check(const PolygonMesh& mesh) {
     group = i;
   }
   topo.num_components = face_sets.CountRoots(faces.size());
+  return consistent;
+}
 
-  // Vertex fans: corners around a vertex are linked when they share an edge to a neighbour x.
+/// Number of vertices whose corners form more than one fan: corners around a vertex are linked
+/// when they share an edge to a neighbour x.
+std::size_t CountNonManifoldVertices(const std::vector<std::vector<std::size_t>>& faces) {
   struct Corner {
     std::size_t vertex, neighbour, corner;
   };
@@ -241,19 +259,33 @@ MeshValidity Check(const PolygonMesh& mesh) {
       corner_sets.Union(links[i].corner, links[i + 1].corner);
     }
   }
+  std::size_t non_manifold = 0;
   for (std::size_t i = 0; i < links.size();) {
     std::size_t j = i;
-    std::size_t fans = 0;
     std::vector<std::size_t> roots;
     while (j < links.size() && links[j].vertex == links[i].vertex) {
       roots.push_back(corner_sets.Find(links[j].corner));
       ++j;
     }
     std::sort(roots.begin(), roots.end());
-    fans = static_cast<std::size_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
-    if (fans > 1) ++topo.num_non_manifold_vertices;
+    const auto fans = std::unique(roots.begin(), roots.end()) - roots.begin();
+    if (fans > 1) ++non_manifold;
     i = j;
   }
+  return non_manifold;
+}
+
+MeshValidity Check(const PolygonMesh& mesh) {
+  CheckIndices(mesh);
+  MeshValidity topo;
+  topo.num_faces = mesh.NumFaces();
+  topo.num_vertices = mesh.vertices.size();
+  topo.num_coincident_vertices = CountCoincidentVertices(mesh);
+  const std::vector<std::vector<std::size_t>> faces = NonDegenerateFaces(mesh, topo);
+  const std::vector<std::vector<std::size_t>> with_area = FacesWithArea(mesh, faces, topo);
+  AddAreaAndVolume(mesh, faces, topo);
+  const bool consistent = CheckEdges(faces, topo);
+  topo.num_non_manifold_vertices = CountNonManifoldVertices(faces);
 
   topo.closed = !faces.empty() && topo.num_boundary_edges == 0 && topo.num_non_manifold_edges == 0;
   topo.two_manifold = topo.num_non_manifold_edges == 0 && topo.num_non_manifold_vertices == 0;

@@ -54,6 +54,232 @@ std::vector<std::string> WarningsFor(const SanitizeStats& s, const SanitizeOptio
   return w;
 }
 
+/// The observation rows and plane memberships, when present, must have one entry a segment.
+void CheckRowCounts(const Scene& in) {
+  const std::size_t num_segments = in.NumSegments();
+  const std::size_t num_rows = in.observations.NumRows();
+  LINESURF_THROW_IF(num_rows != 0 && num_rows != num_segments,
+                    kInvalidInput,
+                    kSanitizeSceneStage,
+                    "scene has " << num_rows << " observation rows for " << num_segments
+                                 << " segments");
+  LINESURF_THROW_IF(in.HasMemberships() && in.memberships.size() != num_segments,
+                    kInvalidInput,
+                    kSanitizeSceneStage,
+                    "scene has " << in.memberships.size() << " plane memberships for "
+                                 << num_segments << " segments");
+}
+
+/// The new id of `id` under `map`; invalid when `id` is out of range or was dropped.
+template <typename Id>
+Id Remap(Id id, const IdVector<Id, Id>& map) {
+  return id.IsValid() && id.index() < map.size() ? map[id] : Id::Invalid();
+}
+
+/// Drops unusable viewpoints, keeping the order of the others; returns old id -> new id.
+IdVector<ViewpointId, ViewpointId> KeepViewpoints(const Scene& in,
+                                                  double max_abs,
+                                                  Scene& out,
+                                                  SanitizeStats& stats) {
+  IdVector<ViewpointId, ViewpointId> view_map(in.viewpoints.size(), ViewpointId::Invalid());
+  for (std::size_t v = 0; v < in.viewpoints.size(); ++v) {
+    const Vec3& c = in.viewpoints[ViewpointId(v)];
+    if (!IsUsable(c, max_abs)) {
+      ++stats.dropped_bad_viewpoints;
+      continue;
+    }
+    view_map[ViewpointId(v)] = out.viewpoints.NextId();
+    out.viewpoints.push_back(c);
+  }
+  return view_map;
+}
+
+/// Drops unusable planes and renormalises the others; returns old id -> new id.
+IdVector<PlaneId, PlaneId> KeepPlanes(const Scene& in,
+                                      const SanitizeOptions& options,
+                                      Scene& out,
+                                      SanitizeStats& stats) {
+  IdVector<PlaneId, PlaneId> plane_map(in.planes.size(), PlaneId::Invalid());
+  for (std::size_t p = 0; p < in.planes.size(); ++p) {
+    Plane3 plane = in.planes[PlaneId(p)];
+    const double length = plane.normal.norm();
+    if (!IsUsable(plane.point, options.max_abs_coordinate) || !plane.normal.allFinite() ||
+        !std::isfinite(length) || !(length > options.min_normal_length)) {
+      ++stats.dropped_bad_planes;
+      continue;
+    }
+    if (std::abs(length - 1.0) > kUnitNormalTolerance) ++stats.renormalised_normals;
+    plane.normal /= length;
+    plane_map[PlaneId(p)] = out.planes.NextId();
+    out.planes.push_back(plane);
+  }
+  return plane_map;
+}
+
+/// Which segments have usable end points, and the length threshold from their scale.
+struct SegmentScale {
+  std::vector<bool> finite;  ///< per input segment: both end points usable
+  double min_length = 0.0;   ///< segments not longer than this are dropped (m)
+};
+
+SegmentScale ScaleOfFiniteSegments(const Scene& in,
+                                   const SanitizeOptions& options,
+                                   SanitizeStats& stats) {
+  const std::size_t num_segments = in.NumSegments();
+  SegmentScale scale{std::vector<bool>(num_segments, false), 0.0};
+  Box3 box;
+  for (std::size_t s = 0; s < num_segments; ++s) {
+    const Segment3& seg = in.segments[SegmentId(s)];
+    scale.finite[s] = IsUsable(seg.p1, options.max_abs_coordinate) &&
+                      IsUsable(seg.p2, options.max_abs_coordinate);
+    if (!scale.finite[s]) {
+      ++stats.dropped_non_finite_segments;
+      continue;
+    }
+    box.Extend(seg.p1);
+    box.Extend(seg.p2);
+  }
+  const double diagonal = box.IsEmpty() ? 0.0 : box.Extent().norm();
+  scale.min_length = options.min_segment_length_rel * diagonal;
+  return scale;
+}
+
+/// The kept views of one segment and their residuals.
+struct ViewRow {
+  std::vector<ViewpointId> views;
+  std::vector<Residual2> residuals;
+};
+
+/// Fills `row` with the remapped, first-seen views of segment `id`; while `residuals_ok`, also
+/// their residuals, and clears `residuals_ok` at the first non-finite one.
+void KeepViews(const Scene& in,
+               SegmentId id,
+               const IdVector<ViewpointId, ViewpointId>& view_map,
+               ViewRow& row,
+               bool& residuals_ok,
+               SanitizeStats& stats) {
+  const auto views = in.observations[id];
+  const std::size_t first_item = in.observations.offsets()[id.index()];
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const ViewpointId mapped = Remap(views[k], view_map);
+    if (!mapped.IsValid()) {
+      ++stats.removed_bad_observations;
+      continue;
+    }
+    if (std::find(row.views.begin(), row.views.end(), mapped) != row.views.end()) {
+      ++stats.removed_duplicate_views;
+      continue;
+    }
+    row.views.push_back(mapped);
+    if (residuals_ok) {
+      const Residual2& r = in.residuals[first_item + k];
+      residuals_ok = std::isfinite(r[0]) && std::isfinite(r[1]) && std::isfinite(r[2]) &&
+                     std::isfinite(r[3]);
+      row.residuals.push_back(r);
+    }
+  }
+}
+
+/// The remapped, distinct planes of one membership.
+PlaneMembership KeepMembership(const PlaneMembership& m,
+                               const IdVector<PlaneId, PlaneId>& plane_map,
+                               SanitizeStats& stats) {
+  PlaneMembership kept;
+  const std::uint8_t count = std::min<std::uint8_t>(m.count, 2);  // the type holds two
+  for (std::uint8_t k = 0; k < count; ++k) {
+    const PlaneId mapped = Remap(m.planes[k], plane_map);
+    if (!mapped.IsValid()) {
+      ++stats.removed_bad_memberships;
+    } else if (!kept.Add(mapped)) {
+      ++stats.removed_repeated_memberships;
+    }
+  }
+  return kept;
+}
+
+/// Keeps the finite segments longer than the threshold, with their views, residuals and
+/// memberships; residuals are kept only when every one is consistent and finite. Returns the box
+/// of the kept segments.
+Box3 KeepSegments(const Scene& in,
+                  const SegmentScale& scale,
+                  const IdVector<ViewpointId, ViewpointId>& view_map,
+                  const IdVector<PlaneId, PlaneId>& plane_map,
+                  SanitizeResult& result) {
+  SanitizeStats& stats = result.stats;
+  Scene& out = result.scene;
+  const bool no_rows = in.observations.NumRows() == 0;  // a scene built without observations
+  const bool keep_residuals = !in.residuals.empty();
+  if (keep_residuals && in.residuals.size() != in.observations.NumItems()) {
+    stats.dropped_residuals = in.residuals.size();
+  }
+  bool residuals_ok = keep_residuals && stats.dropped_residuals == 0;
+  ViewRow row;
+  Box3 kept_box;
+  for (std::size_t s = 0; s < in.NumSegments(); ++s) {
+    const SegmentId id(s);
+    if (!scale.finite[s]) continue;
+    const Segment3& seg = in.segments[id];
+    if (!(seg.Length() > scale.min_length)) {
+      ++stats.dropped_short_segments;
+      continue;
+    }
+    out.segments.push_back(seg);
+    result.input_segment.push_back(id);
+    kept_box.Extend(seg.p1);
+    kept_box.Extend(seg.p2);
+    row.views.clear();
+    row.residuals.clear();
+    if (!no_rows) KeepViews(in, id, view_map, row, residuals_ok, stats);
+    if (row.views.empty()) ++stats.segments_without_views;
+    out.observations.AddRow(row.views);
+    if (residuals_ok) {
+      out.residuals.insert(out.residuals.end(), row.residuals.begin(), row.residuals.end());
+    }
+    if (in.HasMemberships()) {
+      out.memberships.push_back(KeepMembership(in.memberships[id], plane_map, stats));
+    }
+  }
+  if (keep_residuals && !residuals_ok) {
+    stats.dropped_residuals = in.residuals.size();
+    out.residuals.clear();
+  }
+  return kept_box;
+}
+
+/// Fails, naming every reason, when no segment is left.
+void ThrowIfNoSegmentLeft(const SanitizeResult& result, std::size_t num_input_segments) {
+  if (result.scene.NumSegments() != 0) return;
+  std::string why = num_input_segments == 0 ? "the scene has no segments" : "";
+  for (const std::string& w : result.warnings) why += (why.empty() ? "" : "; ") + w;
+  ThrowError(ErrorCode::kInvalidInput, kSanitizeSceneStage, "no usable segment left (" + why + ")");
+}
+
+/// Re-anchors far plane points at the plane point closest to the data centre.
+void ReanchorFarPlanes(const Box3& kept_box,
+                       const SanitizeOptions& options,
+                       Scene& out,
+                       SanitizeStats& stats) {
+  const Vec3 centre = kept_box.Center();
+  const double kept_diagonal = kept_box.Extent().norm();
+  for (Plane3& plane : out.planes) {
+    if ((plane.point - centre).norm() > options.max_plane_point_distance_rel * kept_diagonal) {
+      plane.point = centre - plane.normal * plane.SignedDistance(centre);
+      ++stats.reanchored_planes;
+    }
+  }
+}
+
+/// Moves the scene to a frame centred at `centre`, keeping world_from_local consistent.
+void Recentre(const Vec3& centre, Scene& out) {
+  for (Segment3& seg : out.segments) {
+    seg.p1 -= centre;
+    seg.p2 -= centre;
+  }
+  for (Vec3& v : out.viewpoints) v -= centre;
+  for (Plane3& plane : out.planes) plane.point -= centre;
+  out.world_from_local.translation += centre;
+}
+
 }  // namespace
 
 Status SanitizeOptions::Validate() const {
@@ -78,171 +304,26 @@ Status SanitizeOptions::Validate() const {
 Expected<SanitizeResult> SanitizeScene(Scene in, const SanitizeOptions& options) noexcept {
   if (Status valid = options.Validate(); !valid) return valid.error();
   return CatchAll(kSanitizeSceneStage, [&]() -> SanitizeResult {
-    const std::size_t num_segments = in.NumSegments();
-    const bool no_rows = in.observations.NumRows() == 0;  // a scene built without observations
-    LINESURF_THROW_IF(!no_rows && in.observations.NumRows() != num_segments,
-                      kInvalidInput,
-                      kSanitizeSceneStage,
-                      "scene has " << in.observations.NumRows() << " observation rows for "
-                                   << num_segments << " segments");
-    LINESURF_THROW_IF(in.HasMemberships() && in.memberships.size() != num_segments,
-                      kInvalidInput,
-                      kSanitizeSceneStage,
-                      "scene has " << in.memberships.size() << " plane memberships for "
-                                   << num_segments << " segments");
+    CheckRowCounts(in);
     SanitizeResult result;
     SanitizeStats& stats = result.stats;
-    stats.input_segments = num_segments;
-    const double max_abs = options.max_abs_coordinate;
-
-    // Viewpoints: drop unusable ones, keep the order of the others.
-    IdVector<ViewpointId, ViewpointId> view_map(in.viewpoints.size(), ViewpointId::Invalid());
     Scene& out = result.scene;
-    for (std::size_t v = 0; v < in.viewpoints.size(); ++v) {
-      const Vec3& c = in.viewpoints[ViewpointId(v)];
-      if (!IsUsable(c, max_abs)) {
-        ++stats.dropped_bad_viewpoints;
-        continue;
-      }
-      view_map[ViewpointId(v)] = out.viewpoints.NextId();
-      out.viewpoints.push_back(c);
-    }
-
-    // Planes: drop unusable ones, renormalise the others.
-    IdVector<PlaneId, PlaneId> plane_map(in.planes.size(), PlaneId::Invalid());
-    for (std::size_t p = 0; p < in.planes.size(); ++p) {
-      Plane3 plane = in.planes[PlaneId(p)];
-      const double length = plane.normal.norm();
-      if (!IsUsable(plane.point, max_abs) || !plane.normal.allFinite() || !std::isfinite(length) ||
-          !(length > options.min_normal_length)) {
-        ++stats.dropped_bad_planes;
-        continue;
-      }
-      if (std::abs(length - 1.0) > kUnitNormalTolerance) ++stats.renormalised_normals;
-      plane.normal /= length;
-      plane_map[PlaneId(p)] = out.planes.NextId();
-      out.planes.push_back(plane);
-    }
-
-    // Segments: scene scale from the finite ones, then the length threshold.
-    std::vector<bool> finite(num_segments, false);
-    Box3 box;
-    for (std::size_t s = 0; s < num_segments; ++s) {
-      const Segment3& seg = in.segments[SegmentId(s)];
-      finite[s] = IsUsable(seg.p1, max_abs) && IsUsable(seg.p2, max_abs);
-      if (!finite[s]) {
-        ++stats.dropped_non_finite_segments;
-        continue;
-      }
-      box.Extend(seg.p1);
-      box.Extend(seg.p2);
-    }
-    const double diagonal = box.IsEmpty() ? 0.0 : box.Extent().norm();
-    const double min_length = options.min_segment_length_rel * diagonal;
-
-    const bool keep_residuals = !in.residuals.empty();
-    if (keep_residuals && in.residuals.size() != in.observations.NumItems()) {
-      stats.dropped_residuals = in.residuals.size();
-    }
-    bool residuals_ok = keep_residuals && stats.dropped_residuals == 0;
-    std::vector<ViewpointId> row;
-    std::vector<Residual2> row_residuals;
-    Box3 kept_box;
-    for (std::size_t s = 0; s < num_segments; ++s) {
-      const SegmentId id(s);
-      if (!finite[s]) continue;
-      const Segment3& seg = in.segments[id];
-      if (!(seg.Length() > min_length)) {
-        ++stats.dropped_short_segments;
-        continue;
-      }
-      out.segments.push_back(seg);
-      result.input_segment.push_back(id);
-      kept_box.Extend(seg.p1);
-      kept_box.Extend(seg.p2);
-      row.clear();
-      row_residuals.clear();
-      if (!no_rows) {
-        const auto views = in.observations[id];
-        const std::size_t first_item = in.observations.offsets()[s];
-        for (std::size_t k = 0; k < views.size(); ++k) {
-          const ViewpointId v = views[k];
-          const ViewpointId mapped =
-              v.IsValid() && v.index() < view_map.size() ? view_map[v] : ViewpointId::Invalid();
-          if (!mapped.IsValid()) {
-            ++stats.removed_bad_observations;
-            continue;
-          }
-          if (std::find(row.begin(), row.end(), mapped) != row.end()) {
-            ++stats.removed_duplicate_views;
-            continue;
-          }
-          row.push_back(mapped);
-          if (residuals_ok) {
-            const Residual2& r = in.residuals[first_item + k];
-            residuals_ok = std::isfinite(r[0]) && std::isfinite(r[1]) && std::isfinite(r[2]) &&
-                           std::isfinite(r[3]);
-            row_residuals.push_back(r);
-          }
-        }
-      }
-      if (row.empty()) ++stats.segments_without_views;
-      out.observations.AddRow(row);
-      if (residuals_ok) {
-        out.residuals.insert(out.residuals.end(), row_residuals.begin(), row_residuals.end());
-      }
-      if (in.HasMemberships()) {
-        const PlaneMembership& m = in.memberships[id];
-        PlaneMembership kept;
-        const std::uint8_t count = std::min<std::uint8_t>(m.count, 2);  // the type holds two
-        for (std::uint8_t k = 0; k < count; ++k) {
-          const PlaneId p = m.planes[k];
-          const PlaneId mapped =
-              p.IsValid() && p.index() < plane_map.size() ? plane_map[p] : PlaneId::Invalid();
-          if (!mapped.IsValid()) {
-            ++stats.removed_bad_memberships;
-          } else if (!kept.Add(mapped)) {
-            ++stats.removed_repeated_memberships;
-          }
-        }
-        out.memberships.push_back(kept);
-      }
-    }
-    if (keep_residuals && !residuals_ok) {
-      stats.dropped_residuals = in.residuals.size();
-      out.residuals.clear();
-    }
+    stats.input_segments = in.NumSegments();
+    const IdVector<ViewpointId, ViewpointId> view_map =
+        KeepViewpoints(in, options.max_abs_coordinate, out, stats);
+    const IdVector<PlaneId, PlaneId> plane_map = KeepPlanes(in, options, out, stats);
+    const SegmentScale scale = ScaleOfFiniteSegments(in, options, stats);
+    const Box3 kept_box = KeepSegments(in, scale, view_map, plane_map, result);
     stats.kept_segments = out.NumSegments();
-    result.warnings = WarningsFor(stats, options, min_length);
-    if (out.NumSegments() == 0) {
-      std::string why = num_segments == 0 ? "the scene has no segments" : "";
-      for (const std::string& w : result.warnings) why += (why.empty() ? "" : "; ") + w;
-      ThrowError(
-          ErrorCode::kInvalidInput, kSanitizeSceneStage, "no usable segment left (" + why + ")");
-    }
+    result.warnings = WarningsFor(stats, options, scale.min_length);
+    ThrowIfNoSegmentLeft(result, in.NumSegments());
 
-    // Re-anchor far plane points at the plane point closest to the data centre.
-    const Vec3 centre = kept_box.Center();
-    const double kept_diagonal = kept_box.Extent().norm();
-    for (Plane3& plane : out.planes) {
-      if ((plane.point - centre).norm() > options.max_plane_point_distance_rel * kept_diagonal) {
-        plane.point = centre - plane.normal * plane.SignedDistance(centre);
-        ++stats.reanchored_planes;
-      }
-    }
-    result.warnings = WarningsFor(stats, options, min_length);
+    ReanchorFarPlanes(kept_box, options, out, stats);
+    result.warnings = WarningsFor(stats, options, scale.min_length);
 
     out.world_from_local = in.world_from_local;
     out.extra_fields = std::move(in.extra_fields);
-    if (options.recentre) {
-      for (Segment3& seg : out.segments) {
-        seg.p1 -= centre;
-        seg.p2 -= centre;
-      }
-      for (Vec3& v : out.viewpoints) v -= centre;
-      for (Plane3& plane : out.planes) plane.point -= centre;
-      out.world_from_local.translation += centre;
-    }
+    if (options.recentre) Recentre(kept_box.Center(), out);
     return result;
   });
 }
