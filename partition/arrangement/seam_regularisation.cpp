@@ -5,6 +5,7 @@
 #include "engine/core/parallel.h"
 #include "partition/arrangement/exact_predicates.h"
 #include "partition/arrangement/seam_overlay.h"
+#include "partition/arrangement/vertex_key_geometry.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -24,15 +25,6 @@ constexpr char kSeamRegularisationStage[] = "seam_regularisation";
 /// Pieces of an edge shorter than this fraction of the block size are rounding slivers between
 /// breakpoints that are one point exactly.
 constexpr double kMinPieceRelative = 1e-12;
-
-VertexKey GlobalVertexKey(const BlockComplex& block, VertexId v) {
-  const auto& t = block.complex.vertex_planes[v];
-  VertexKey key{block.plane_keys[t[0].index()],
-                block.plane_keys[t[1].index()],
-                block.plane_keys[t[2].index()]};
-  std::sort(key.begin(), key.end());
-  return key;
-}
 
 /// The local plane of block `block` with global key `key`, or invalid.
 ComplexPlaneId LocalPlane(const BlockComplex& block, PlaneKey key) {
@@ -76,7 +68,7 @@ int CellSideOf(const BlockComplexes& cx, std::size_t b, CellId c, PlaneKey q) {
     for (const VertexId v : k.facet_vertices[f]) {
       if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
       seen.push_back(v);
-      const int s = SignAt(cx, GlobalVertexKey(block, v), q);
+      const int s = SignAt(cx, BlockVertexKey(block, v), q);
       positive |= s > 0;
       negative |= s < 0;
       if (positive && negative) return 0;
@@ -461,7 +453,7 @@ bool AddSeamVertices(const BlockComplexes& cx, const RunContext& ctx, SeamRegula
     const CellComplex& k = block.complex;
     for (std::size_t v = 0; v < k.NumVertices(); ++v) {
       if (k.vertex_planes[VertexId(v)][0].index() >= kNumBoxPlanes) continue;  // off the box
-      raw.push_back({GlobalVertexKey(block, VertexId(v)), k.vertex_points[VertexId(v)]});
+      raw.push_back({BlockVertexKey(block, VertexId(v)), k.vertex_points[VertexId(v)]});
     }
   }
   for (const SeamFace& face : cx.seams) {

@@ -215,13 +215,7 @@ class BlockSolver {
                     " blocks): max-flow of the pairwise part, then " +
                     std::to_string(result.block_sweeps) + " sweeps of block solves with " +
                     std::to_string(options_.blocks.halo) + "-hop halos (" + CountBackends() + ")";
-    if (improve.local_search_passes > 0) result.method += ", local search";
-    if (improve.group_move_passes > 0) result.method += ", group moves";
-    if (polished.windows > 0) {
-      result.method += ", exact windows of ";
-      result.method += std::to_string(improve.window_cells);
-      result.method += " cells (cbc)";
-    }
+    AppendImprovementSteps(improve, polished, result.method);
     result.seconds = Elapsed();
     return result;
   }

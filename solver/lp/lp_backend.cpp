@@ -83,13 +83,7 @@ bool Improve(const EnergyInput& energy, const LabelingOptions& options, const Ru
           : energy.Evaluate(std::span<const std::uint8_t>(result.labels));
   result.method = SolverBackendName(result.backend);
   result.method += integral ? " integer program" : " lp, rounding";
-  if (improve.local_search_passes > 0) result.method += ", local search";
-  if (improve.group_move_passes > 0) result.method += ", group moves";
-  if (polished.windows > 0) {
-    result.method += ", exact windows of ";
-    result.method += std::to_string(improve.window_cells);
-    result.method += " cells (cbc)";
-  }
+  AppendImprovementSteps(improve, polished, result.method);
   return polished.whole_energy_proven;
 }
 

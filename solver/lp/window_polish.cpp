@@ -199,4 +199,16 @@ WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
   return polished;
 }
 
+void AppendImprovementSteps(const ImproveOptions& options,
+                            const WindowPolishStats& polished,
+                            std::string& method) {
+  if (options.local_search_passes > 0) method += ", local search";
+  if (options.group_move_passes > 0) method += ", group moves";
+  if (polished.windows > 0) {
+    method += ", exact windows of ";
+    method += std::to_string(options.window_cells);
+    method += " cells (cbc)";
+  }
+}
+
 }  // namespace linesurf::solver

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace linesurf::solver {
@@ -54,5 +55,11 @@ WindowPolishStats PolishResultInWindows(const EnergyInput& energy,
                                         const ImproveOptions& options,
                                         const RunContext& ctx,
                                         LabelingResult& result);
+
+/// Appends to a labelling's method text the improvements that ran after it: local search,
+/// group moves, and the exact windows when `polished` solved any.
+void AppendImprovementSteps(const ImproveOptions& options,
+                            const WindowPolishStats& polished,
+                            std::string& method);
 
 }  // namespace linesurf::solver
