@@ -10,6 +10,7 @@
 #include "engine/core/exception.h"
 #include "engine/io/cityjson_write.h"
 #include "engine/io/ifc_write.h"
+#include "engine/io/mesh_io.h"
 #include "engine/io/reference_json.h"
 #include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/detect_scene_planes.h"
@@ -69,7 +70,7 @@ Status WriteCityModel(const char* stage,
     std::vector<Plane3> engine_planes;
     engine_planes.reserve(planes.size());
     for (const Plane& p : planes) {
-      engine_planes.push_back(Plane3{api::ToVec3(p.point), api::ToVec3(p.normal)});
+      engine_planes.push_back(Plane3{ToVec3(p.point), ToVec3(p.normal)});
     }
     ThrowIfInvalid(write(engine_mesh, engine_planes, options, path));
   });
@@ -184,6 +185,10 @@ Status WriteScene(const std::string& path, const SceneData& scene) noexcept {
   return CatchAll("write_scene", [&] {
     ThrowIfInvalid(io::WriteReferenceJson(ToEngineSceneData(scene, path), path));
   });
+}
+
+Expected<Mesh> ReadMesh(const std::string& path) noexcept {
+  return CatchAll("read_mesh", [&] { return ToMesh(ValueOrThrow(io::ReadMesh(path))); });
 }
 
 Status WriteMesh(const std::string& path,

@@ -7,6 +7,7 @@
 
 #include "engine/core/polygon_mesh.h"
 #include "engine/core/public_mesh.h"
+#include "engine/core/public_vector.h"
 #include "engine/core/scene.h"
 
 #include <array>
@@ -36,8 +37,5 @@ namespace linesurf::api {
 /// Planes moved from the local frame to world coordinates (ToWorldExact).
 [[nodiscard]] std::vector<Plane> ToWorldPlanes(const IdVector<PlaneId, Plane3>& planes,
                                                const Rigid3& world_from_local);
-
-[[nodiscard]] inline Vec3 ToVec3(const Vector3& v) { return Vec3(v[0], v[1], v[2]); }
-[[nodiscard]] inline Vector3 ToVector3(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 }  // namespace linesurf::api

@@ -1,7 +1,7 @@
 // `linesurf render`: PNG pictures of segments (coloured by plane membership) and/or a mesh.
 
-#include "engine/io/mesh_io.h"
-#include "engine/io/read_scene.h"
+#include "linesurf/linesurf.h"
+
 #include "tools/cli/commands.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/scene_input.h"
@@ -41,8 +41,8 @@ int Run(const RenderArgs& args_in) {
   args.options.width = width;
   args.options.height = height;
   if (!args.camera.empty()) {
-    args.options.camera = Camera{Vec3(args.camera[0], args.camera[1], args.camera[2]),
-                                 Vec3(args.camera[3], args.camera[4], args.camera[5])};
+    args.options.camera = Camera{{args.camera[0], args.camera[1], args.camera[2]},
+                                 {args.camera[3], args.camera[4], args.camera[5]}};
   }
   if (auto valid = args.options.Validate(); !valid) return ReportError(valid.error());
   OutputFiles files("render");
@@ -50,18 +50,15 @@ int Run(const RenderArgs& args_in) {
   files.AddInput(args.mesh_path);
   files.AddOutput("-o", args.output_path, {".png"});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  std::optional<Scene> scene;
+  std::optional<SceneData> scene;
   if (!args.lines.input.empty()) {
-    io::SceneReadOptions read_options;
-    read_options.nvm = args.lines.nvm;
-    read_options.colmap = args.lines.colmap;
-    auto read = io::ReadScene(args.lines.input, read_options);
+    Expected<ReadSceneResult> read = ReadScene(args.lines.input, args.lines.Options());
     if (!read) return ReportError(read.error());
-    scene = std::move(*read);
+    scene = std::move(read->scene);
   }
-  std::optional<PolygonMesh> mesh;
+  std::optional<Mesh> mesh;
   if (!args.mesh_path.empty()) {
-    auto read = io::ReadMesh(args.mesh_path);
+    Expected<Mesh> read = ReadMesh(args.mesh_path);
     if (!read) return ReportError(read.error());
     mesh = std::move(*read);
   }

@@ -2,6 +2,10 @@
 
 #include "engine/core/exception.h"
 #include "engine/core/face_triangulation.h"
+#include "engine/core/geometry.h"
+#include "engine/core/polygon_mesh.h"
+#include "engine/core/public_mesh.h"
+#include "engine/core/public_vector.h"
 
 #include <Eigen/Geometry>
 
@@ -33,6 +37,34 @@ constexpr std::array<std::uint8_t, 3> kColourSeparator{200, 200, 200};
 
 using Colour = std::array<double, 3>;
 
+/// The segments to draw, in world coordinates, with their number of planes (0, 1 or 2).
+struct WorldLines {
+  std::vector<Segment3> segments;
+  std::vector<int> plane_counts;
+};
+
+WorldLines ToWorldLines(const SceneData& scene) {
+  WorldLines lines;
+  lines.segments.reserve(scene.segments.size());
+  for (const Segment& s : scene.segments) lines.segments.push_back({ToVec3(s.p1), ToVec3(s.p2)});
+  lines.plane_counts.assign(scene.segments.size(), 0);
+  if (!scene.has_memberships) return lines;
+  for (std::size_t i = 0; i < scene.memberships.size(); ++i) {
+    const std::uint32_t s = scene.memberships[i].segment;
+    LINESURF_THROW_IF(s >= scene.segments.size(), kInvalidInput, kRenderImageStage,
+                      "membership " << i << " refers to segment " << s << " of "
+                                    << scene.segments.size());
+    ++lines.plane_counts[s];
+  }
+  return lines;
+}
+
+/// The camera of RenderOptions in engine vectors.
+struct ViewCamera {
+  Vec3 eye;
+  Vec3 target;
+};
+
 Colour ToColour(const std::array<std::uint8_t, 3>& c) {
   return {static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2])};
 }
@@ -40,7 +72,7 @@ Colour ToColour(const std::array<std::uint8_t, 3>& c) {
 /// Pinhole projection of world points into a panel of the supersampled canvas.
 class Projector {
  public:
-  Projector(const Camera& camera, double fov_degrees, int width, int height)
+  Projector(const ViewCamera& camera, double fov_degrees, int width, int height)
       : eye_(camera.eye), width_(width), height_(height) {
     forward_ = (camera.target - camera.eye).normalized();
     Vec3 up = Vec3::UnitZ();
@@ -204,13 +236,10 @@ void DrawMesh(Canvas& canvas, const Projector& proj, const PolygonMesh& mesh, in
   }
 }
 
-void DrawLines(Canvas& canvas, const Projector& proj, const Scene& scene, double width) {
-  const std::size_t n = scene.NumSegments();
+void DrawLines(Canvas& canvas, const Projector& proj, const WorldLines& lines, double width) {
+  const std::size_t n = lines.segments.size();
   std::vector<double> depth(n);
-  for (std::size_t s = 0; s < n; ++s) {
-    const Segment3& seg = scene.segments[SegmentId(static_cast<std::uint32_t>(s))];
-    depth[s] = proj.Depth(scene.world_from_local.Apply(seg.Midpoint()));
-  }
+  for (std::size_t s = 0; s < n; ++s) depth[s] = proj.Depth(lines.segments[s].Midpoint());
   // Painter's order, far to near, ties by id.
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
@@ -220,27 +249,24 @@ void DrawLines(Canvas& canvas, const Projector& proj, const Scene& scene, double
   const double span = n > 0 ? std::max(*far_it - near_depth, kMinDepthSpan) : 1.0;
   const Colour background = ToColour(kColourBackground);
   for (std::size_t s : order) {
-    const SegmentId id(static_cast<std::uint32_t>(s));
-    const int count = scene.HasMemberships() ? scene.memberships[id].count : 0;
+    const int count = lines.plane_counts[s];
     const Colour base = ToColour(count == 0 ? kColourNoPlane : count == 1 ? kColourTextural : kColourStructural);
     const double fade = kDepthFade * std::clamp((depth[s] - near_depth) / span, 0.0, 1.0);
     Colour colour;
     for (int c = 0; c < 3; ++c) colour[c] = base[c] + fade * (background[c] - base[c]);
-    const Segment3& seg = scene.segments[id];
-    DrawSegment(canvas, proj, scene.world_from_local.Apply(seg.p1), scene.world_from_local.Apply(seg.p2),
-                width, colour, false);
+    DrawSegment(canvas, proj, lines.segments[s].p1, lines.segments[s].p2, width, colour, false);
   }
 }
 
 /// Robust box of the segment endpoints (quantiles per axis) joined with the mesh's full box.
-Box3 FramingBox(const Scene* lines, const PolygonMesh* mesh) {
+Box3 FramingBox(const WorldLines* lines, const PolygonMesh* mesh) {
   Box3 box;
-  if (lines != nullptr && lines->NumSegments() > 0) {
+  if (lines != nullptr && !lines->segments.empty()) {
     for (int axis = 0; axis < 3; ++axis) {
       std::vector<double> values;
       for (const Segment3& s : lines->segments) {
-        values.push_back(lines->world_from_local.Apply(s.p1)[axis]);
-        values.push_back(lines->world_from_local.Apply(s.p2)[axis]);
+        values.push_back(s.p1[axis]);
+        values.push_back(s.p2[axis]);
       }
       std::sort(values.begin(), values.end());
       const auto at = [&](double q) {
@@ -256,7 +282,7 @@ Box3 FramingBox(const Scene* lines, const PolygonMesh* mesh) {
   return box;
 }
 
-Camera PresetCamera(const std::string& view, const Box3& box, double fov_degrees, double aspect) {
+ViewCamera PresetCamera(const std::string& view, const Box3& box, double fov_degrees, double aspect) {
   Vec3 direction;  // from the target towards the eye
   if (view == "iso") direction = Vec3(1.0, -1.3, 0.9);
   else if (view == "iso-back") direction = Vec3(-1.0, 1.3, 0.9);
@@ -279,7 +305,7 @@ bool IsPresetView(const std::string& view) {
   return false;
 }
 
-Image Render(const Scene* lines, const PolygonMesh* mesh, const RenderOptions& options) {
+Image Render(const WorldLines* lines, const PolygonMesh* mesh, const RenderOptions& options) {
   LINESURF_THROW_IF(lines == nullptr && mesh == nullptr,
                     kInvalidInput,
                     kRenderImageStage,
@@ -303,8 +329,9 @@ Image Render(const Scene* lines, const PolygonMesh* mesh, const RenderOptions& o
   Box3 box = FramingBox(lines, mesh);
   if (box.IsEmpty()) box.Extend(Vec3::Zero());
   const double aspect = static_cast<double>(panel_width) / options.height;
-  const Camera camera = options.camera ? *options.camera
-                                       : PresetCamera(options.view, box, options.fov_degrees, aspect);
+  const ViewCamera camera =
+      options.camera ? ViewCamera{ToVec3(options.camera->eye), ToVec3(options.camera->target)}
+                     : PresetCamera(options.view, box, options.fov_degrees, aspect);
   LINESURF_THROW_IF((camera.target - camera.eye).norm() == 0.0,
                     kInvalidOptions,
                     kRenderImageStage,
@@ -364,17 +391,25 @@ Status RenderOptions::Validate() const {
     LINESURF_THROW_IF(!(line_width > 0.0 && line_width <= 16.0), kInvalidOptions, "render_options",
                       "line_width must be in (0, 16]");
     if (camera) {
-      LINESURF_THROW_IF(!camera->eye.allFinite() || !camera->target.allFinite() ||
-                            (camera->eye - camera->target).norm() == 0.0,
+      const Vec3 eye = ToVec3(camera->eye);
+      const Vec3 target = ToVec3(camera->target);
+      LINESURF_THROW_IF(!eye.allFinite() || !target.allFinite() || (eye - target).norm() == 0.0,
                         kInvalidOptions, "render_options", "camera eye and target must differ and be finite");
     }
   });
 }
 
-Expected<Image> RenderImage(const Scene* lines, const PolygonMesh* mesh,
+Expected<Image> RenderImage(const SceneData* lines, const Mesh* mesh,
                             const RenderOptions& options) noexcept {
   if (auto valid = options.Validate(); !valid) return valid.error();
-  return CatchAll(kRenderImageStage, [&] { return Render(lines, mesh, options); });
+  return CatchAll(kRenderImageStage, [&] {
+    std::optional<WorldLines> world_lines;
+    if (lines != nullptr) world_lines = ToWorldLines(*lines);
+    std::optional<PolygonMesh> polygon_mesh;
+    if (mesh != nullptr) polygon_mesh = ValueOrThrow(ToPolygonMesh(*mesh));
+    return Render(world_lines ? &*world_lines : nullptr, polygon_mesh ? &*polygon_mesh : nullptr,
+                  options);
+  });
 }
 
 }  // namespace linesurf

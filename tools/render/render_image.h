@@ -10,10 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/core/geometry.h"
-#include "engine/core/polygon_mesh.h"
-#include "engine/core/scene.h"
 #include "linesurf/error.h"
+#include "linesurf/types.h"
 
 namespace linesurf {
 
@@ -32,8 +30,8 @@ struct Image {
 
 /// A perspective camera looking from `eye` at `target`, z up (y up when looking straight down).
 struct Camera {
-  Vec3 eye = Vec3(1, -1, 1);
-  Vec3 target = Vec3::Zero();
+  Vector3 eye{1.0, -1.0, 1.0};
+  Vector3 target{0.0, 0.0, 0.0};
 };
 
 struct RenderOptions {
@@ -61,11 +59,12 @@ inline constexpr std::array<std::uint8_t, 3> kColourTextural{40, 100, 220};
 inline constexpr std::array<std::uint8_t, 3> kColourStructural{215, 40, 40};
 inline constexpr std::array<std::uint8_t, 3> kColourBackground{255, 255, 255};
 
-/// @brief Renders `lines` (segments, coloured by `memberships` count: 0 grey, 1 blue, 2 red)
+/// @brief Renders `lines` (segments, coloured by their number of memberships: 0 grey, 1 blue,
+/// 2 red; all grey when the scene has no memberships)
 /// and/or `mesh`; lines on the left, mesh on the right when both are given, one camera framing
 /// both. Deterministic (serial); O(pixels + drawn length x width + triangles' pixels).
 /// @return kInvalidOptions, or kInvalidInput when neither is given or a face index is bad.
-Expected<Image> RenderImage(const Scene* lines, const PolygonMesh* mesh,
+Expected<Image> RenderImage(const SceneData* lines, const Mesh* mesh,
                             const RenderOptions& options) noexcept;
 
 }  // namespace linesurf

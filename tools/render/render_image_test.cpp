@@ -12,26 +12,34 @@
 namespace linesurf {
 namespace {
 
-PolygonMesh UnitCube() {
-  PolygonMesh mesh;
-  for (int i = 0; i < 8; ++i) mesh.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+Mesh UnitCube() {
+  Mesh mesh;
+  for (int i = 0; i < 8; ++i) {
+    mesh.vertices.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  }
   const std::array<std::array<std::uint32_t, 4>, 6> faces{{
       {0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
-  for (const auto& f : faces) mesh.AddFace(f);
+  for (const auto& f : faces) {
+    mesh.face_indices.insert(mesh.face_indices.end(), f.begin(), f.end());
+    mesh.face_offsets.push_back(static_cast<std::uint32_t>(mesh.face_indices.size()));
+  }
   return mesh;
 }
 
-/// The cube's 12 edges as segments: bottom ones structural, top ones textural, verticals none.
-Scene CubeEdges() {
-  Scene scene;
-  const PolygonMesh cube = UnitCube();
+/// The cube's 12 edges as segments: bottom ones structural (two planes), top ones textural (one
+/// plane), verticals on none.
+SceneData CubeEdges() {
+  SceneData scene;
+  const Mesh cube = UnitCube();
   const std::array<std::array<int, 2>, 12> edges{{{0, 1}, {1, 3}, {3, 2}, {2, 0}, {4, 5}, {5, 7},
                                                   {7, 6}, {6, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}}};
+  scene.planes.resize(2);
+  scene.has_memberships = true;
   for (std::size_t e = 0; e < edges.size(); ++e) {
+    const auto s = static_cast<std::uint32_t>(e);
     scene.segments.push_back({cube.vertices[edges[e][0]], cube.vertices[edges[e][1]]});
-    PlaneMembership m;
-    m.count = e < 4 ? 2 : e < 8 ? 1 : 0;
-    scene.memberships.push_back(m);
+    const int count = e < 4 ? 2 : e < 8 ? 1 : 0;
+    for (int k = 0; k < count; ++k) scene.memberships.push_back({s, static_cast<std::uint32_t>(k)});
   }
   return scene;
 }
@@ -48,7 +56,7 @@ TEST(RenderImage, MeshPanelIsShadedAndFramed) {
   RenderOptions options;
   options.width = 160;
   options.height = 120;
-  const PolygonMesh cube = UnitCube();
+  const Mesh cube = UnitCube();
   const auto image = RenderImage(nullptr, &cube, options);
   ASSERT_TRUE(image) << image.error().ToString();
   ASSERT_EQ(image->width, 160);
@@ -66,8 +74,8 @@ TEST(RenderImage, LinesAndMeshSideBySideWithMembershipColours) {
   options.height = 160;
   options.supersample = 1;  // exact colours, no blending
   options.line_width = 3.0;
-  const PolygonMesh cube = UnitCube();
-  const Scene edges = CubeEdges();
+  const Mesh cube = UnitCube();
+  const SceneData edges = CubeEdges();
   const auto image = RenderImage(&edges, &cube, options);
   ASSERT_TRUE(image) << image.error().ToString();
   ASSERT_EQ(image->width, 320);
@@ -92,8 +100,8 @@ TEST(RenderImage, PngIsWrittenWithTheRightSizeAndDeterministicBytes) {
   options.width = 200;
   options.height = 100;
   options.view = "top";
-  const PolygonMesh cube = UnitCube();
-  const Scene edges = CubeEdges();
+  const Mesh cube = UnitCube();
+  const SceneData edges = CubeEdges();
   const auto dir = testing::FreshTempDir();
   std::string bytes[2];
   for (int run = 0; run < 2; ++run) {
@@ -120,11 +128,18 @@ TEST(RenderImage, RejectsNothingToDrawAndBadOptions) {
   EXPECT_EQ(RenderImage(nullptr, nullptr, RenderOptions{}).error().code, ErrorCode::kInvalidInput);
   RenderOptions options;
   options.view = "sideways";
-  const PolygonMesh cube = UnitCube();
+  const Mesh cube = UnitCube();
   EXPECT_EQ(RenderImage(nullptr, &cube, options).error().code, ErrorCode::kInvalidOptions);
   options.view = "iso";
   options.width = 4;
   EXPECT_EQ(RenderImage(nullptr, &cube, options).error().code, ErrorCode::kInvalidOptions);
+  options.width = 160;
+  SceneData edges = CubeEdges();
+  edges.memberships.push_back({99, 0});
+  const auto bad_membership = RenderImage(&edges, nullptr, options);
+  ASSERT_FALSE(bad_membership);
+  EXPECT_EQ(bad_membership.error().code, ErrorCode::kInvalidInput);
+  EXPECT_NE(bad_membership.error().message.find("segment 99"), std::string::npos);
 }
 
 }  // namespace

@@ -118,6 +118,12 @@ class LINESURF_API Reconstruction {
 [[nodiscard]] LINESURF_API Status WriteScene(const std::string& path,
                                              const SceneData& scene) noexcept;
 
+/// @brief Reads a polygon mesh from PLY (ASCII or binary little/big endian), OBJ or OFF, chosen by
+/// the extension; faces keep their vertex order.
+/// @return kInvalidInput (missing or unreadable file, unknown extension, malformed content); the
+/// message names the file and the line (text) or element (binary) at fault.
+[[nodiscard]] LINESURF_API Expected<Mesh> ReadMesh(const std::string& path) noexcept;
+
 /// @brief Writes a mesh as PLY (binary unless options.ascii), OBJ or OFF, chosen by the
 /// extension; the same bytes as `linesurf reconstruct -o`. Written to a temporary name and
 /// renamed.
