@@ -14,8 +14,14 @@
 #include "engine/io/reference_json.h"
 #include "engine/io/vertex_groups_write.h"
 #include "engine/pipeline/detect_scene_planes.h"
+#include "engine/pipeline/evaluate_mesh.h"
 #include "engine/pipeline/mesh_validity.h"
+#include "engine/pipeline/quality_against_lines.h"
 #include "engine/pipeline/sanitize_scene.h"
+
+#include <optional>
+#include <span>
+#include <vector>
 
 namespace linesurf {
 inline namespace v2 {
@@ -209,6 +215,38 @@ Status WriteVertexGroups(const std::string& path, const SceneData& scene) noexce
 Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept {
   return CatchAll("check_mesh", [&] {
     return ValueOrThrow(CheckMeshValidity(ValueOrThrow(ToPolygonMesh(mesh))));
+  });
+}
+
+Expected<EvaluationResult> EvaluateMesh(const Mesh& result,
+                                        const Mesh& ground_truth,
+                                        const EvaluationOptions& options,
+                                        std::span<const Vector3> visible_from,
+                                        const RunControl& control) noexcept {
+  return CatchAll("evaluate_mesh", [&] {
+    ThrowIfInvalid(options.Validate());
+    std::optional<std::vector<Vec3>> viewpoints;
+    if (!visible_from.empty()) {
+      viewpoints.emplace();
+      for (const Vector3& v : visible_from) viewpoints->push_back(ToVec3(v));
+    }
+    const api::HostContext host(control, options.num_threads);
+    return ValueOrThrow(pipeline::EvaluateMesh(ValueOrThrow(ToPolygonMesh(result)),
+                                               ValueOrThrow(ToPolygonMesh(ground_truth)), options,
+                                               viewpoints, &host.Context()));
+  });
+}
+
+Expected<SurfaceQuality> MeasureSurfaceQuality(const Mesh& mesh,
+                                               const SceneData& lines,
+                                               const DetectOptions& options,
+                                               const RunControl& control) noexcept {
+  return CatchAll("quality", [&] {
+    ThrowIfInvalid(options.Validate());
+    const api::HostContext host(control, options.num_threads);
+    return ValueOrThrow(pipeline::MeasureQualityAgainstLines(
+        ValueOrThrow(ToPolygonMesh(mesh)), ToEngineSceneData(lines),
+        api::ToEngineOptions(options.detection, options.seed), host.Context()));
   });
 }
 

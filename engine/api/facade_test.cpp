@@ -323,6 +323,28 @@ TEST(FacadeIo, WriteMeshRefusesBrokenOffsets) {
   EXPECT_EQ(s.error().code, ErrorCode::kInvalidInput);
 }
 
+TEST(FacadeIo, ReadMeshReadsWhatWriteMeshWrote) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.5, -0.0}};
+  mesh.face_offsets = {0, 3, 6};
+  mesh.face_indices = {0, 1, 2, 1, 3, 2};
+  const auto dir = testing::FreshTempDir();
+  for (const char* name : {"m.ply", "m.obj", "m.off"}) {
+    const std::string path = (dir / name).string();
+    ASSERT_TRUE(WriteMesh(path, mesh).has_value()) << name;
+    const Expected<Mesh> back = ReadMesh(path);
+    ASSERT_TRUE(back.has_value()) << back.error().ToString();
+    EXPECT_EQ(back->vertices, mesh.vertices) << name;
+    EXPECT_EQ(back->face_offsets, mesh.face_offsets) << name;
+    EXPECT_EQ(back->face_indices, mesh.face_indices) << name;
+  }
+  const Expected<Mesh> missing = ReadMesh((dir / "none.ply").string());
+  ASSERT_FALSE(missing.has_value());
+  EXPECT_EQ(missing.error().code, ErrorCode::kInvalidInput);
+  EXPECT_NE(missing.error().message.find("none.ply"), std::string::npos)
+      << missing.error().ToString();
+}
+
 TEST(FacadeIo, SceneRoundTripsThroughWriteScene) {
   const ReadSceneResult house = ReadHouse();
   ASSERT_FALSE(house.scene.segments.empty());
@@ -435,6 +457,76 @@ TEST(FacadeReconstruct, HouseEqualsThePipeline) {
     EXPECT_LE(++per_segment[mb.segment], 2);
   }
   EXPECT_FALSE(facade->memberships.empty());
+}
+
+TEST(FacadeEvaluate, AMeshAgainstItselfIsPerfectAndBadOptionsAreNamed) {
+  const ReadSceneResult house = ReadHouse();
+  const auto result = Reconstruct(house.scene.View(), HouseOptions());
+  ASSERT_TRUE(result.has_value()) << result.error().ToString();
+  EvaluationOptions options;
+  options.samples_per_mesh = 5000;
+  const Expected<EvaluationResult> self = EvaluateMesh(result->mesh, result->mesh, options);
+  ASSERT_TRUE(self.has_value()) << self.error().ToString();
+  ASSERT_EQ(self->precision.size(), options.thresholds.size());
+  for (std::size_t i = 0; i < options.thresholds.size(); ++i) {
+    EXPECT_EQ(self->precision[i], 1.0);
+    EXPECT_EQ(self->completeness[i], 1.0);
+  }
+  EXPECT_TRUE(self->topology.closed);
+  EXPECT_EQ(self->num_visible_gt_samples, self->num_gt_samples);
+  // Restricted to what the viewpoints see, completeness counts fewer ground-truth samples.
+  const Expected<EvaluationResult> seen =
+      EvaluateMesh(result->mesh, result->mesh, options, house.scene.viewpoints);
+  ASSERT_TRUE(seen.has_value()) << seen.error().ToString();
+  EXPECT_LT(seen->num_visible_gt_samples, seen->num_gt_samples);
+  EXPECT_GT(seen->num_visible_gt_samples, 0u);
+
+  options.thresholds = {0.1, 0.05};
+  const Expected<EvaluationResult> bad = EvaluateMesh(result->mesh, result->mesh, options);
+  ASSERT_FALSE(bad.has_value());
+  EXPECT_EQ(bad.error().code, ErrorCode::kInvalidOptions);
+  EXPECT_NE(bad.error().message.find("increasing"), std::string::npos);
+  options.thresholds = {0.05};
+  options.num_threads = kMaxThreads + 1;
+  EXPECT_EQ(EvaluateMesh(result->mesh, result->mesh, options).error().code,
+            ErrorCode::kInvalidOptions);
+}
+
+/// The figures without ground truth of a result, measured again from its planes and memberships,
+/// are those the run reported.
+TEST(FacadeEvaluate, QualityOfAResultIsTheRunsOwn) {
+  const ReadSceneResult house = ReadHouse();
+  const auto result = Reconstruct(house.scene.View(), HouseOptions());
+  ASSERT_TRUE(result.has_value()) << result.error().ToString();
+  ASSERT_TRUE(result->stats.quality.measured);
+  SceneData lines = house.scene;
+  lines.planes = result->planes;
+  lines.memberships = result->memberships;
+  lines.has_memberships = true;
+  DetectOptions options;
+  options.detection.epsilon = result->stats.detection.epsilon.epsilon;
+  const Expected<SurfaceQuality> quality = MeasureSurfaceQuality(result->mesh, lines, options);
+  ASSERT_TRUE(quality.has_value()) << quality.error().ToString();
+  EXPECT_EQ(quality->epsilon, result->stats.detection.epsilon.epsilon);
+  EXPECT_NEAR(quality->data_fit, result->stats.quality.data_fit, 1e-9);
+  EXPECT_NEAR(quality->visibility_consistency, result->stats.quality.visibility_consistency, 1e-9);
+  EXPECT_EQ(quality->components.size(), result->stats.quality.components.size());
+  EXPECT_EQ(quality->floating_fragments, result->stats.quality.floating_fragments);
+
+  // Without planes they are detected; eps is estimated when not given.
+  SceneData bare = house.scene;
+  bare.planes.clear();
+  bare.memberships.clear();
+  bare.has_memberships = false;
+  const Expected<SurfaceQuality> detected = MeasureSurfaceQuality(result->mesh, bare);
+  ASSERT_TRUE(detected.has_value()) << detected.error().ToString();
+  EXPECT_GT(detected->epsilon, 0.0);
+  EXPECT_GT(detected->data_fit, 0.9);
+
+  DetectOptions bad;
+  bad.detection.epsilon = -1.0;
+  EXPECT_EQ(MeasureSurfaceQuality(result->mesh, bare, bad).error().code,
+            ErrorCode::kInvalidOptions);
 }
 
 /// The bytes of WriteMesh are those of `linesurf reconstruct` (the CLI on the engine).

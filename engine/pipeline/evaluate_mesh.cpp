@@ -1,9 +1,12 @@
-#include "tools/eval/evaluate_mesh.h"
+#include "engine/pipeline/evaluate_mesh.h"
+
+#include "linesurf/options.h"
 
 #include "engine/core/coordinate_bound.h"
 #include "engine/core/exception.h"
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
+#include "engine/pipeline/mesh_validity.h"
 #include "partition/mesh/triangle_tree.h"
 
 #include <tbb/blocked_range.h>
@@ -13,7 +16,7 @@
 #include <cmath>
 #include <string>
 
-namespace linesurf {
+namespace linesurf::pipeline {
 namespace {
 
 constexpr const char* kEvaluateMeshStage = "evaluate_mesh";
@@ -160,7 +163,12 @@ EvaluationResult Evaluate(const PolygonMesh& result_mesh, const PolygonMesh& gt_
 
 }  // namespace
 
-Status EvaluationOptions::Validate() const {
+}  // namespace linesurf::pipeline
+
+namespace linesurf {
+inline namespace v2 {
+
+Status EvaluationOptions::Validate() const noexcept {
   return CatchAll("evaluation_options", [&] {
     LINESURF_THROW_IF(thresholds.empty(), kInvalidOptions, "evaluation_options",
                       "thresholds must not be empty");
@@ -170,14 +178,21 @@ Status EvaluationOptions::Validate() const {
       LINESURF_THROW_IF(i > 0 && !(thresholds[i] > thresholds[i - 1]), kInvalidOptions,
                         "evaluation_options", "thresholds must be increasing");
     }
-    LINESURF_THROW_IF(samples_per_mesh < 1 || samples_per_mesh > kMaxSamplesPerMesh,
+    LINESURF_THROW_IF(samples_per_mesh < 1 || samples_per_mesh > pipeline::kMaxSamplesPerMesh,
                       kInvalidOptions,
                       "evaluation_options",
-                      "samples_per_mesh must be in [1, " << kMaxSamplesPerMesh << "]");
+                      "samples_per_mesh must be in [1, " << pipeline::kMaxSamplesPerMesh << "]");
     LINESURF_THROW_IF(!(visibility_offset > 0.0) || !std::isfinite(visibility_offset),
                       kInvalidOptions, "evaluation_options", "visibility_offset must be > 0");
+    LINESURF_THROW_IF(num_threads < 0 || num_threads > kMaxThreads, kInvalidOptions,
+                      "evaluation_options", "num_threads must be in [0, " << kMaxThreads << "]");
   });
 }
+
+}  // namespace v2
+}  // namespace linesurf
+
+namespace linesurf::pipeline {
 
 Expected<EvaluationResult> EvaluateMesh(const PolygonMesh& result, const PolygonMesh& ground_truth,
                                         const EvaluationOptions& options,
@@ -199,4 +214,4 @@ Expected<EvaluationResult> EvaluateMesh(const PolygonMesh& result, const Polygon
   });
 }
 
-}  // namespace linesurf
+}  // namespace linesurf::pipeline

@@ -1,4 +1,4 @@
-#include "tools/eval/evaluate_mesh.h"
+#include "engine/pipeline/evaluate_mesh.h"
 
 #include "tests/support/box_mesh.h"
 
@@ -7,12 +7,12 @@
 #include <array>
 #include <vector>
 
-namespace linesurf {
+namespace linesurf::pipeline {
 namespace {
 
-using testing::Append;
-using testing::Box;
-using testing::Cube;
+using linesurf::testing::Append;
+using linesurf::testing::Box;
+using linesurf::testing::Cube;
 
 // Built once and copied: GCC 12 warns of a dangling pointer (a false positive) when the
 // defaults' initializer list is inlined into every test.
@@ -129,4 +129,4 @@ TEST(EvaluateMesh, RejectsBadOptionsAndEmptyMeshes) {
 }
 
 }  // namespace
-}  // namespace linesurf
+}  // namespace linesurf::pipeline

@@ -7,7 +7,7 @@
 #include "tests/support/t_junctions.h"
 #include "tests/support/test_paths.h"
 #include "tests/support/thread_count.h"
-#include "tools/eval/evaluate_mesh.h"
+#include "engine/pipeline/evaluate_mesh.h"
 #include "tools/gen/synthesize.h"
 
 #include <Eigen/Geometry>
@@ -63,7 +63,7 @@ auto EvaluateAt5cm(const synth::SyntheticScene& s, const PolygonMesh& mesh) {
   eo.thresholds = {0.05};
   eo.samples_per_mesh = 20000;
   std::vector<Vec3> views(s.scene.viewpoints.begin(), s.scene.viewpoints.end());
-  return EvaluateMesh(mesh, s.ground_truth, eo, views);
+  return pipeline::EvaluateMesh(mesh, s.ground_truth, eo, views);
 }
 
 void ExpectGood(const synth::SyntheticScene& s, const pipeline::ReconstructResult& r) {

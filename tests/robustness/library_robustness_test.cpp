@@ -1,12 +1,12 @@
-// Hostile inputs through the library API (pipeline::Reconstruct, EvaluateMesh, ReadMesh): an
-// Error with the expected code, never a crash, an abort or a signal (a SIGFPE here kills the
-// whole test executable).
+// Hostile inputs through the library API (pipeline::Reconstruct, pipeline::EvaluateMesh,
+// io::ReadMesh): an Error with the expected code, never a crash, an abort or a signal (a SIGFPE
+// here kills the whole test executable).
 
 #include "engine/io/mesh_io.h"
 #include "engine/pipeline/reconstruct.h"
 #include "tests/robustness/hostile_case.h"
 #include "tests/support/test_paths.h"
-#include "tools/eval/evaluate_mesh.h"
+#include "engine/pipeline/evaluate_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -153,17 +153,17 @@ TEST(LibraryApi, EvaluateRefusesCoordinatesBeyondTheBoundInsteadOfTrapping) {
   for (const double scale : {1e13, 1e80, 1e120, std::numeric_limits<double>::infinity()}) {
     RecordVerdict(kKind, 3);
     RecordVerdict(kKind, 3);
-    const auto result = EvaluateMesh(CubeMesh(scale), CubeMesh(1.0), o, std::nullopt);
+    const auto result = pipeline::EvaluateMesh(CubeMesh(scale), CubeMesh(1.0), o, std::nullopt);
     ASSERT_FALSE(result.has_value()) << scale;
     EXPECT_EQ(result.error().code, ErrorCode::kInvalidInput);
     EXPECT_NE(result.error().message.find("result mesh: vertex 1"), std::string::npos)
         << result.error().ToString();
-    const auto gt = EvaluateMesh(CubeMesh(1.0), CubeMesh(scale), o, std::nullopt);
+    const auto gt = pipeline::EvaluateMesh(CubeMesh(1.0), CubeMesh(scale), o, std::nullopt);
     ASSERT_FALSE(gt.has_value()) << scale;
     EXPECT_NE(gt.error().message.find("ground truth mesh: vertex 1"), std::string::npos);
   }
   RecordVerdict(kKind, 0);
-  const auto big = EvaluateMesh(CubeMesh(1e11), CubeMesh(1e11), o, std::nullopt);
+  const auto big = pipeline::EvaluateMesh(CubeMesh(1e11), CubeMesh(1e11), o, std::nullopt);
   ASSERT_TRUE(big.has_value()) << big.error().ToString();
   EXPECT_DOUBLE_EQ(big->precision.back(), 1.0);
 }

@@ -1,20 +1,13 @@
 // `linesurf evaluate RESULT [GT] [--lines INPUT]`: precision/completeness against a ground-truth
 // mesh and topology; figures without ground truth against the input segments.
 
-#include "linesurf/report.h"
+#include "linesurf/linesurf.h"
 
-#include "engine/detect/estimate_epsilon.h"
-#include "engine/io/mesh_io.h"
-#include "engine/io/read_scene.h"
-#include "engine/io/reference_json.h"
-#include "engine/pipeline/sanitize_scene.h"
-#include "engine/pipeline/surface_quality.h"
+#include "tools/cli/cli_support.h"
 #include "tools/cli/commands.h"
-#include "tools/cli/engine_run_context.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
 #include "tools/cli/surface_quality_summary.h"
-#include "tools/eval/evaluate_mesh.h"
 
 #include <chrono>
 #include <cstdio>
@@ -35,35 +28,22 @@ struct EvaluateArgs {
   std::string visible_from;
   std::string json_path;
   std::string lines_path;
-  PlaneDetectionOptions detection;  // eps (auto by default), planes when the input has none
+  std::optional<double> epsilon;  // of the figures against the lines; unset: estimated
   EvaluationOptions options;
 };
 
-/// Figures without ground truth of the mesh against the segments of `args.lines_path`: its
-/// planes and memberships, or detected ones when it has none. Mesh and scene go to the local
-/// frame of the sanitised scene.
-Expected<pipeline::SurfaceQuality> QualityAgainstLines(const CommonOptions& common,
-                                                       const EvaluateArgs& args,
-                                                       PolygonMesh mesh, RunContext& ctx) {
-  Expected<io::SceneReadResult> read = io::ReadSceneWithWarnings(args.lines_path, {});
+/// Figures without ground truth of `mesh` against the segments of `args.lines_path`: its planes
+/// and memberships, or detected ones when it has none.
+Expected<SurfaceQuality> QualityAgainstLines(const CommonOptions& common,
+                                             const EvaluateArgs& args,
+                                             const Mesh& mesh) {
+  Expected<ReadSceneResult> read = ReadScene(args.lines_path);
   if (!read) return read.error();
   for (const std::string& w : read->warnings) PrintWarning(common, w);
-  const bool given = !read->scene.planes.empty() && read->scene.HasMemberships();
-  Expected<pipeline::SanitizeResult> sane = pipeline::SanitizeScene(std::move(read->scene), {});
-  if (!sane) return sane.error();
-  Scene scene = std::move(sane->scene);
-  if (!given) {
-    scene.planes.clear();
-    scene.memberships.clear();
-    Expected<PlaneDetectionResult> detected = DetectPlanes(scene, args.detection, ctx);
-    if (!detected) return detected.error();
-    scene.planes = std::move(detected->planes);
-    scene.memberships = std::move(detected->memberships);
-  }
-  Expected<EpsilonEstimate> eps = ResolveEpsilon(scene, args.detection, ctx);
-  if (!eps) return eps.error();
-  for (Vec3& v : mesh.vertices) v = scene.world_from_local.ApplyInverse(v);
-  return pipeline::MeasureSurfaceQuality(mesh, scene, eps->epsilon, {}, ctx);
+  DetectOptions detect;
+  detect.detection.epsilon = args.epsilon;
+  detect.num_threads = common.threads;
+  return MeasureSurfaceQuality(mesh, read->scene, detect, CliRunControl(common));
 }
 
 nlohmann::json StatsJson(const DistanceStats& s) {
@@ -134,30 +114,28 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
   const bool json_file = !args.json_path.empty() && args.json_path != "-";
   if (json_file) files.AddOutput("--json", args.json_path, {});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  RunContext ctx;
-  ConfigureRunContext(common, ctx);
   const auto start = std::chrono::steady_clock::now();
-  auto result_mesh = io::ReadMesh(args.result_path);
+  Expected<Mesh> result_mesh = ReadMesh(args.result_path);
   if (!result_mesh) return ReportError(result_mesh.error());
   nlohmann::json json = {{"result", args.result_path}};
   const bool table = args.json_path != "-";
   if (!args.gt_path.empty()) {
-    auto gt_mesh = io::ReadMesh(args.gt_path);
+    Expected<Mesh> gt_mesh = ReadMesh(args.gt_path);
     if (!gt_mesh) return ReportError(gt_mesh.error());
-    std::optional<std::vector<Vec3>> viewpoints;
+    std::vector<Vector3> viewpoints;
     if (!args.visible_from.empty()) {
-      auto scene = io::ReadReferenceJson(args.visible_from);
+      Expected<ReadSceneResult> scene = ReadScene(args.visible_from);
       if (!scene) return ReportError(scene.error());
-      viewpoints.emplace();
-      for (const Vec3& v : scene->viewpoints) {
-        viewpoints->push_back(scene->world_from_local.Apply(v));
-      }
-      if (viewpoints->empty()) {
+      viewpoints = std::move(scene->scene.viewpoints);
+      if (viewpoints.empty()) {
         return ReportError(Error{ErrorCode::kInvalidInput, "evaluate",
                                  args.visible_from + " holds no viewpoints"});
       }
     }
-    auto result = EvaluateMesh(*result_mesh, *gt_mesh, args.options, viewpoints, &ctx);
+    EvaluationOptions options = args.options;
+    options.num_threads = common.threads;
+    Expected<EvaluationResult> result =
+        EvaluateMesh(*result_mesh, *gt_mesh, options, viewpoints, CliRunControl(common));
     if (!result) {  // the library says "ground truth mesh: ..." or speaks of the result
       const bool of_gt = result.error().message.rfind("ground truth", 0) == 0;
       return ReportError(result.error(), of_gt ? args.gt_path : args.result_path);
@@ -166,8 +144,7 @@ int Run(const CommonOptions& common, const EvaluateArgs& args) {
     json = ToJson(args, *result);
   }
   if (!args.lines_path.empty()) {
-    Expected<pipeline::SurfaceQuality> quality =
-        QualityAgainstLines(common, args, *result_mesh, ctx);
+    Expected<SurfaceQuality> quality = QualityAgainstLines(common, args, *result_mesh);
     if (!quality) return ReportError(quality.error());
     if (table) {
       std::printf("%s\nagainst the segments of %s (eps %.6g):\n%s",
@@ -211,7 +188,7 @@ Command AddEvaluateCommand(CLI::App& app, CommonOptions& common) {
                       "with the input's planes or, when it has none, detected ones");
   cmd.app
       ->add_option("--epsilon",
-                   args->detection.epsilon,
+                   args->epsilon,
                    "eps of the figures, scene units (unset: auto, estimated from the data)")
       ->check(Above(0.0));
   cmd.app->add_option(

@@ -22,6 +22,7 @@
 /// limits (tbb::global_control).
 
 #include "linesurf/error.h"
+#include "linesurf/evaluation.h"
 #include "linesurf/export.h"
 #include "linesurf/option_schema.h"
 #include "linesurf/options.h"
@@ -145,6 +146,34 @@ class LINESURF_API Reconstruction {
 /// @return kInvalidInput (an index out of range, inconsistent face offsets, a coordinate
 /// beyond the bound).
 [[nodiscard]] LINESURF_API Expected<MeshValidity> CheckMesh(const Mesh& mesh) noexcept;
+
+/// @brief Precision and completeness of `result` against `ground_truth` (both in the same frame
+/// and units), distances both ways and the validity of `result` (linesurf/evaluation.h);
+/// `linesurf evaluate RESULT GT` prints the same numbers.
+/// @param visible_from when not empty, completeness only counts ground-truth samples that one of
+///   these viewpoints sees unoccluded by the ground truth.
+/// @return kInvalidOptions, kInvalidInput (a mesh without area, bad indices; the message starts
+/// with "ground truth" when it is about `ground_truth`), kCancelled. Deterministic for any
+/// thread count.
+[[nodiscard]] LINESURF_API Expected<EvaluationResult> EvaluateMesh(
+    const Mesh& result,
+    const Mesh& ground_truth,
+    const EvaluationOptions& options = {},
+    std::span<const Vector3> visible_from = {},
+    const RunControl& control = {}) noexcept;
+
+/// @brief The figures without ground truth (SurfaceQuality, linesurf/stats.h) of `mesh` against
+/// the segments of `lines` (same frame): data fit, visibility consistency, components, floating
+/// fragments, planes on no face. The scene is sanitised; its planes are used when it gives them
+/// with memberships, detected with `options` otherwise; eps is `options.detection.epsilon` or
+/// estimated. `linesurf evaluate RESULT --lines INPUT` prints the same numbers.
+/// @return kInvalidOptions, kInvalidInput (a bad scene, a mesh without area), kCancelled.
+/// Deterministic for any thread count.
+[[nodiscard]] LINESURF_API Expected<SurfaceQuality> MeasureSurfaceQuality(
+    const Mesh& mesh,
+    const SceneData& lines,
+    const DetectOptions& options = {},
+    const RunControl& control = {}) noexcept;
 
 /// @brief Writes a mesh as CityJSON 2.0: one Building per connected component, a Solid (LoD 2.2)
 /// whose surfaces are the component's faces joined per plane (holes as inner rings), a
