@@ -4,6 +4,7 @@
 #include "linesurf/option_schema.h"
 
 #include "engine/api/options_conversion.h"
+#include "engine/pipeline/evaluate_mesh.h"
 #include "engine/pipeline/reconstruct.h"
 
 namespace linesurf {
@@ -19,6 +20,10 @@ Status AsOptionError(Status s) {
 }  // namespace
 
 Status DetectOptions::Validate() const noexcept { return ValidateOptionValues(*this); }
+
+Status EvaluationOptions::Validate() const noexcept {
+  return pipeline::ValidateEvaluationOptions(*this);
+}
 
 Status ReconstructOptions::Validate() const noexcept {
   if (Status s = ValidateOptionValues(*this); !s) return s;

@@ -163,42 +163,32 @@ EvaluationResult Evaluate(const PolygonMesh& result_mesh, const PolygonMesh& gt_
 
 }  // namespace
 
-}  // namespace linesurf::pipeline
-
-namespace linesurf {
-inline namespace v2 {
-
-Status EvaluationOptions::Validate() const noexcept {
-  return CatchAll("evaluation_options", [&] {
-    LINESURF_THROW_IF(thresholds.empty(), kInvalidOptions, "evaluation_options",
-                      "thresholds must not be empty");
-    for (std::size_t i = 0; i < thresholds.size(); ++i) {
-      LINESURF_THROW_IF(!(thresholds[i] > 0.0) || !std::isfinite(thresholds[i]), kInvalidOptions,
-                        "evaluation_options", "threshold " << thresholds[i] << " must be > 0");
-      LINESURF_THROW_IF(i > 0 && !(thresholds[i] > thresholds[i - 1]), kInvalidOptions,
-                        "evaluation_options", "thresholds must be increasing");
+Status ValidateEvaluationOptions(const EvaluationOptions& options) noexcept {
+  constexpr const char* kStage = "evaluation_options";
+  return CatchAll(kStage, [&] {
+    const std::vector<double>& t = options.thresholds;
+    LINESURF_THROW_IF(t.empty(), kInvalidOptions, kStage, "thresholds must not be empty");
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      LINESURF_THROW_IF(!(t[i] > 0.0) || !std::isfinite(t[i]), kInvalidOptions, kStage,
+                        "threshold " << t[i] << " must be > 0");
+      LINESURF_THROW_IF(i > 0 && !(t[i] > t[i - 1]), kInvalidOptions, kStage,
+                        "thresholds must be increasing");
     }
-    LINESURF_THROW_IF(samples_per_mesh < 1 || samples_per_mesh > pipeline::kMaxSamplesPerMesh,
-                      kInvalidOptions,
-                      "evaluation_options",
-                      "samples_per_mesh must be in [1, " << pipeline::kMaxSamplesPerMesh << "]");
-    LINESURF_THROW_IF(!(visibility_offset > 0.0) || !std::isfinite(visibility_offset),
-                      kInvalidOptions, "evaluation_options", "visibility_offset must be > 0");
-    LINESURF_THROW_IF(num_threads < 0 || num_threads > kMaxThreads, kInvalidOptions,
-                      "evaluation_options", "num_threads must be in [0, " << kMaxThreads << "]");
+    LINESURF_THROW_IF(options.samples_per_mesh < 1 || options.samples_per_mesh > kMaxSamplesPerMesh,
+                      kInvalidOptions, kStage,
+                      "samples_per_mesh must be in [1, " << kMaxSamplesPerMesh << "]");
+    LINESURF_THROW_IF(!(options.visibility_offset > 0.0) || !std::isfinite(options.visibility_offset),
+                      kInvalidOptions, kStage, "visibility_offset must be > 0");
+    LINESURF_THROW_IF(options.num_threads < 0 || options.num_threads > kMaxThreads,
+                      kInvalidOptions, kStage, "num_threads must be in [0, " << kMaxThreads << "]");
   });
 }
-
-}  // namespace v2
-}  // namespace linesurf
-
-namespace linesurf::pipeline {
 
 Expected<EvaluationResult> EvaluateMesh(const PolygonMesh& result, const PolygonMesh& ground_truth,
                                         const EvaluationOptions& options,
                                         const std::optional<std::vector<Vec3>>& visible_from,
                                         const RunContext* ctx) noexcept {
-  if (auto valid = options.Validate(); !valid) return valid.error();
+  if (auto valid = ValidateEvaluationOptions(options); !valid) return valid.error();
   // Beyond the coordinate bound the exact fallback of CGAL meets overflowed doubles (GMP raises
   // SIGFPE on converting inf): refuse such meshes before any geometry.
   for (const auto& [mesh, name] :

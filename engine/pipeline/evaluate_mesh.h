@@ -22,6 +22,10 @@ using EvaluationOptions = ::linesurf::EvaluationOptions;
 using DistanceStats = ::linesurf::DistanceStats;
 using EvaluationResult = ::linesurf::EvaluationResult;
 
+/// EvaluationOptions::Validate (the facade's): kInvalidOptions naming the first field out of its
+/// range.
+[[nodiscard]] Status ValidateEvaluationOptions(const EvaluationOptions& options) noexcept;
+
 /// @brief Evaluates `result` against `ground_truth` (both in the same frame and units).
 /// @param visible_from when given, completeness only counts ground-truth samples that some
 ///   viewpoint sees unoccluded by the ground truth (the segment viewpoint -> sample hits no face

@@ -1,7 +1,5 @@
 #include "tools/cli/cli_support.h"
 
-#include "engine/core/exception.h"
-
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -9,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <new>
 
 namespace linesurf::cli {
 namespace {
@@ -71,8 +70,6 @@ void PrintWarning(const CommonOptions& common, const std::string& message) {
 int GuardedRun(const std::function<int()>& fn) {
   try {
     return fn();
-  } catch (const LinesurfException& e) {
-    return ReportError(e.error());
   } catch (const std::bad_alloc&) {
     return ReportError(Error{ErrorCode::kResourceExhausted, "", "out of memory"});
   } catch (const std::exception& e) {

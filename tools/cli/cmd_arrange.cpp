@@ -1,14 +1,14 @@
 // `linesurf arrange PLANES.json --box ...`: builds the exact cell complex of the planes inside a
 // box (debug subcommand) and prints its counts as one JSON object on stdout.
 
-#include "engine/io/reference_json.h"
-#include "partition/arrangement/build_cell_complex.h"
-#include "partition/arrangement/validate_cell_complex.h"
-#include "partition/arrangement/write_cells_ply.h"
+#include "linesurf/linesurf.h"
+
+#include "tools/arrange/plane_arrangement.h"
+#include "tools/cli/cli_support.h"
 #include "tools/cli/commands.h"
-#include "tools/cli/engine_run_context.h"
 #include "tools/cli/output_files.h"
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -28,69 +28,55 @@ struct ArrangeArgs {
 };
 
 int Run(const ArrangeArgs& args, const CommonOptions& common) {
-  Box3 box_in_world;
-  box_in_world.min = Vec3(args.box[0], args.box[1], args.box[2]);
-  box_in_world.max = Vec3(args.box[3], args.box[4], args.box[5]);
-  if (!box_in_world.min.allFinite() || !box_in_world.max.allFinite() ||
-      !(box_in_world.min.array() < box_in_world.max.array()).all()) {
-    return ReportError(Error{ErrorCode::kInvalidOptions, "arrange", "--box needs XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX"});
+  const Vector3 box_min{args.box[0], args.box[1], args.box[2]};
+  const Vector3 box_max{args.box[3], args.box[4], args.box[5]};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!std::isfinite(box_min[axis]) || !std::isfinite(box_max[axis]) ||
+        !(box_min[axis] < box_max[axis])) {
+      return ReportError(Error{ErrorCode::kInvalidOptions, "arrange",
+                               "--box needs XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX"});
+    }
   }
-  partition::CellsPlyOptions ply_options;
-  ply_options.shrink = args.shrink;
-  if (auto valid = ply_options.Validate(); !valid) return ReportError(valid.error());
+  if (Status valid = arrange::ValidateCellsShrink(args.shrink); !valid) {
+    return ReportError(valid.error());
+  }
   OutputFiles files("arrange");
   files.AddInput(args.planes_path);
   files.AddOutput("--cells-ply", args.cells_ply, {".ply"});
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
-  auto scene = io::ReadReferenceJson(args.planes_path);
-  if (!scene) return ReportError(scene.error());
+  Expected<ReadSceneResult> read = ReadScene(args.planes_path);
+  if (!read) return ReportError(read.error());
 
-  // The complex works in a local frame centred on the box (the box and the file share a frame).
-  const Vec3 centre = box_in_world.Center();
-  Box3 box;
-  box.min = box_in_world.min - centre;
-  box.max = box_in_world.max - centre;
-  std::vector<Plane3> planes;
-  planes.reserve(scene->planes.size());
-  for (const Plane3& p : scene->planes) {
-    Plane3 local = p;
-    local.point = scene->world_from_local.Apply(p.point) - centre;
-    planes.push_back(local);
-  }
-  RunContext ctx;
-  ConfigureRunContext(common, ctx);
-  auto built = partition::BuildCellComplex(box, planes, {}, ctx);
+  Expected<arrange::PlaneArrangement> built = arrange::PlaneArrangement::Build(
+      box_min, box_max, read->scene.planes, CliRunControl(common));
   if (!built) return ReportError(built.error());
-  const CellComplex& cx = built->complex;
-  const partition::CellComplexStats& s = built->stats;
-  for (const std::string& w : built->warnings) PrintWarning(common, w);
-
+  for (const std::string& w : built->Warnings()) PrintWarning(common, w);
+  const arrange::ArrangementCounts& n = built->Counts();
   nlohmann::json out = {
-      {"cells", cx.NumCells()},
-      {"facets", cx.NumFacets()},
-      {"edges", cx.NumEdges()},
-      {"vertices", cx.NumVertices()},
-      {"planes_input", s.planes_input},
-      {"planes_used", s.planes_used},
-      {"planes_skipped", s.planes_skipped_outside + s.planes_skipped_touching + s.planes_duplicate +
-                             s.planes_invalid},
-      {"planes_skipped_outside", s.planes_skipped_outside},
-      {"planes_skipped_touching", s.planes_skipped_touching},
-      {"planes_duplicate", s.planes_duplicate},
-      {"planes_invalid", s.planes_invalid},
-      {"exact_fallbacks", s.exact_fallbacks},
-      {"seconds", s.seconds},
+      {"cells", n.cells},
+      {"facets", n.facets},
+      {"edges", n.edges},
+      {"vertices", n.vertices},
+      {"planes_input", n.planes_input},
+      {"planes_used", n.planes_used},
+      {"planes_skipped", n.planes_skipped_outside + n.planes_skipped_touching +
+                             n.planes_duplicate + n.planes_invalid},
+      {"planes_skipped_outside", n.planes_skipped_outside},
+      {"planes_skipped_touching", n.planes_skipped_touching},
+      {"planes_duplicate", n.planes_duplicate},
+      {"planes_invalid", n.planes_invalid},
+      {"exact_fallbacks", n.exact_fallbacks},
+      {"seconds", n.seconds},
   };
   if (args.validate) {
-    const Status valid = partition::ValidateCellComplex(cx);
+    const Status valid = built->Validate();
     out["valid"] = valid.has_value();
     if (!valid) out["validation_error"] = valid.error().ToString();
   }
   if (!args.cells_ply.empty()) {
-    ply_options.translation = centre;
     if (Status written = files.Write(
             args.cells_ply,
-            [&](const auto& path) { return partition::WriteCellsPly(cx, path, ply_options); });
+            [&](const auto& path) { return built->WriteCellsPly(path, args.shrink); });
         !written) {
       return ReportError(written.error());
     }

@@ -1,16 +1,10 @@
 // `linesurf synth FAMILY --seed S [--size N] [--noise SIGMA] [--outliers FRACTION] -o DIR`:
 // a seeded synthetic scene with ground truth (docs/user/synthetic.md).
 
-#include "engine/core/parallel.h"
-#include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/option_checks.h"
 #include "tools/cli/output_files.h"
-#include "tools/gen/synthesize.h"
-#include "tools/gen/synthetic_meta.h"
-
-#include <tbb/task_arena.h>
+#include "tools/gen/synthetic_files.h"
 
 #include <filesystem>
 #include <iostream>
@@ -54,39 +48,32 @@ int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   files.AddOutput("-o", dir / "meta.json", kJsonExtensions);
   if (Status s = files.Prepare(); !s) return ReportError(s.error());
 
-  tbb::task_arena arena(ArenaConcurrency(common.threads));
-  Expected<synth::SyntheticScene> scene = arena.execute([&] { return synth::Synthesize(spec); });
+  Expected<synth::SyntheticFiles> scene = synth::SyntheticFiles::Generate(spec, common.threads);
   if (!scene) return ReportError(scene.error());
-  if (Status s =
-          files.Write(dir / "lines.json",
-                      [&](const auto& p) { return io::WriteReferenceJson(scene->scene, p); });
+  if (Status s = files.Write(dir / "lines.json",
+                             [&](const auto& p) { return scene->WriteLines(p); });
       !s) {
     return ReportError(s.error());
   }
   if (Status s = files.Write(dir / "ground_truth.ply",
-                             [&](const auto& p) { return io::WriteMesh(scene->ground_truth, p); });
+                             [&](const auto& p) { return scene->WriteGroundTruth(p); });
       !s) {
     return ReportError(s.error());
   }
-  if (Status s = files.Write(dir / "meta.json",
-                             [&](const auto& p) { return synth::WriteSyntheticMeta(*scene, p); });
+  if (Status s =
+          files.Write(dir / "meta.json", [&](const auto& p) { return scene->WriteMeta(p); });
       !s) {
     return ReportError(s.error());
   }
   if (Status s = files.Commit(); !s) return ReportError(s.error());
   if (!common.quiet) {
-    std::map<synth::SegmentKind, std::size_t> kinds;
-    for (synth::SegmentKind k : scene->kinds) ++kinds[k];
-    std::cerr << "synth " << spec.family << " seed " << spec.seed << ": "
-              << scene->scene.segments.size() << " segments ("
-              << kinds[synth::SegmentKind::kStructural] << " structural, "
-              << kinds[synth::SegmentKind::kTextural] << " textural, "
-              << kinds[synth::SegmentKind::kOutlier] << " outliers), "
-              << scene->scene.viewpoints.size() << " viewpoints, " << scene->true_planes.size()
-              << " true planes, ground truth " << scene->ground_truth.NumFaces()
-              << " faces -> " << (dir / "lines.json").string() << ", "
-              << (dir / "ground_truth.ply").string() << ", " << (dir / "meta.json").string()
-              << "\n";
+    const synth::SyntheticSummary n = scene->Summary();
+    std::cerr << "synth " << spec.family << " seed " << spec.seed << ": " << n.segments
+              << " segments (" << n.structural << " structural, " << n.textural << " textural, "
+              << n.outliers << " outliers), " << n.viewpoints << " viewpoints, " << n.true_planes
+              << " true planes, ground truth " << n.ground_truth_faces << " faces -> "
+              << (dir / "lines.json").string() << ", " << (dir / "ground_truth.ply").string()
+              << ", " << (dir / "meta.json").string() << "\n";
   }
   return kExitOk;
 }

@@ -1,9 +1,7 @@
 #include "tools/cli/output_files.h"
 
-#include "engine/core/exception.h"
-#include "engine/io/mesh_format.h"
-
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <system_error>
 
@@ -16,6 +14,13 @@ const std::vector<std::string> kMeshExtensions = {".ply", ".obj", ".off"};
 const std::vector<std::string> kJsonExtensions = {".json"};
 
 namespace {
+
+/// The extension of `path`, lower-case, with its dot ("" when it has none).
+std::string LowerExtension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 std::string JoinExtensions(const std::vector<std::string>& extensions) {
   std::string text;
@@ -88,7 +93,7 @@ Status OutputFiles::CheckOutput(const Output& output) const {
   const auto refuse = [&](const std::string& why) -> Status {
     return Error{ErrorCode::kInvalidOptions, stage_, name + why};
   };
-  const std::string ext = io::LowerExtension(output.path);
+  const std::string ext = LowerExtension(output.path);
   if (!output.extensions.empty() &&
       std::find(output.extensions.begin(), output.extensions.end(), ext) ==
           output.extensions.end()) {
@@ -159,7 +164,7 @@ Status OutputFiles::Write(const fs::path& final_path,
     return o.path == final_path && !o.staged.empty();
   });
   if (output == outputs_.end()) {
-    ThrowError(ErrorCode::kInternal, stage_, final_path.string() + ": not a prepared output");
+    return Error{ErrorCode::kInternal, stage_, final_path.string() + ": not a prepared output"};
   }
   Status written = write(output->staged);
   if (written) return written;
