@@ -238,12 +238,8 @@ void SplitByObservation(const SynthSpec& spec, SyntheticScene& out) {
   out.kinds = std::move(kinds);
 }
 
-SyntheticScene Build(const SynthSpec& spec) {
-  FamilyLayout layout = MakeLayout(spec);
-  const int max_pieces = spec.max_pieces.value_or(layout.default_max_pieces);
-  const double max_trim = spec.max_trim.value_or(layout.default_max_trim);
-
-  // True lines: sharp edges (structural) first, then texture lines.
+/// The true lines of a layout: its sharp edges (structural) first, then its texture lines.
+std::vector<TrueLine> TrueLines(const FamilyLayout& layout) {
   std::vector<TrueLine> lines;
   for (const SharpEdge& e : layout.solid.SharpEdges()) {
     TrueLine line;
@@ -255,16 +251,17 @@ SyntheticScene Build(const SynthSpec& spec) {
     lines.push_back(line);
   }
   lines.insert(lines.end(), layout.texture_lines.begin(), layout.texture_lines.end());
+  return lines;
+}
 
-  std::vector<Piece> pieces;
-  for (std::uint32_t i = 0; i < lines.size(); ++i) {
-    CutLine(lines[i], i, spec, max_pieces, max_trim, layout.min_piece_length, pieces);
-  }
-
-  // Occlusion-correct views: nearest viewpoints that are in front of the line's faces and see
-  // every sample point of the piece.
+/// Occlusion-correct views of every piece, sorted: the nearest viewpoints (at most
+/// spec.max_views) in front of one of its line's faces that see every sample point of it.
+std::vector<std::vector<std::uint32_t>> VisibleViews(const std::vector<Piece>& pieces,
+                                                     const std::vector<TrueLine>& lines,
+                                                     const FamilyLayout& layout,
+                                                     const ViewpointIndex& index,
+                                                     const SynthSpec& spec) {
   const Occluder occluder(layout.solid);
-  const ViewpointIndex index(layout.viewpoints, layout.max_view_distance);
   std::vector<std::vector<std::uint32_t>> views(pieces.size());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, pieces.size(), kVisibilityGrain),
@@ -301,14 +298,18 @@ SyntheticScene Build(const SynthSpec& spec) {
           std::sort(views[pi].begin(), views[pi].end());
         }
       });
+  return views;
+}
 
-  SyntheticScene out;
-  out.spec = spec;
-  out.interior = layout.interior;
-  out.ground_truth_volume = layout.volume;
+/// The pieces some viewpoint sees, with their endpoint noise, views and true planes; hidden ones
+/// are counted in out.num_hidden_dropped.
+void AddVisiblePieces(const std::vector<Piece>& pieces,
+                      const std::vector<TrueLine>& lines,
+                      const std::vector<std::vector<std::uint32_t>>& views,
+                      const FamilyLayout& layout,
+                      const SynthSpec& spec,
+                      SyntheticScene& out) {
   Scene& scene = out.scene;
-  for (const Vec3& v : layout.viewpoints) scene.viewpoints.push_back(v);
-  scene.planes = layout.solid.planes();
   std::vector<ViewpointId> row;
   for (std::size_t pi = 0; pi < pieces.size(); ++pi) {
     if (views[pi].empty()) {
@@ -329,8 +330,15 @@ SyntheticScene Build(const SynthSpec& spec) {
     scene.memberships.push_back(line.planes);
     out.kinds.push_back(line.kind);
   }
+}
 
-  // Outliers, each seen by its nearest viewpoints (no occlusion test: they are not geometry).
+/// The outliers of `spec` after the `inliers` segments of out.scene, each seen by its nearest
+/// viewpoints (no occlusion test: they are not geometry).
+void AddOutliers(const FamilyLayout& layout,
+                 const ViewpointIndex& index,
+                 const SynthSpec& spec,
+                 SyntheticScene& out) {
+  Scene& scene = out.scene;
   const std::size_t inliers = scene.segments.size();
   const std::size_t num_outliers =
       spec.outlier_count
@@ -340,6 +348,7 @@ SyntheticScene Build(const SynthSpec& spec) {
                                                   static_cast<double>(inliers)));
   const ViewpointIndex all_views(layout.viewpoints, std::numeric_limits<double>::infinity());
   std::vector<std::pair<double, std::uint32_t>> near;
+  std::vector<ViewpointId> row;
   for (std::size_t o = 0; o < num_outliers; ++o) {
     Rng rng = StreamRng(spec.seed, SynthStream::kOutlier, o);
     if (spec.outlier_model == OutlierModel::kNear && inliers > 0) {
@@ -369,20 +378,46 @@ SyntheticScene Build(const SynthSpec& spec) {
     scene.memberships.push_back(PlaneMembership{});
     out.kinds.push_back(SegmentKind::kOutlier);
   }
+}
 
+/// Moves everything by spec.offset along x and y (georeferenced-like coordinates).
+void ApplyOffset(const SynthSpec& spec, SyntheticScene& out) {
+  if (spec.offset == 0.0) return;
+  const Vec3 shift(spec.offset, spec.offset, 0.0);
+  for (Segment3& s : out.scene.segments) {
+    s.p1 += shift;
+    s.p2 += shift;
+  }
+  for (Vec3& v : out.scene.viewpoints) v += shift;
+  for (Plane3& p : out.scene.planes) p.point += shift;
+  for (Vec3& v : out.ground_truth.vertices) v += shift;
+}
+
+SyntheticScene Build(const SynthSpec& spec) {
+  FamilyLayout layout = MakeLayout(spec);
+  const int max_pieces = spec.max_pieces.value_or(layout.default_max_pieces);
+  const double max_trim = spec.max_trim.value_or(layout.default_max_trim);
+  const std::vector<TrueLine> lines = TrueLines(layout);
+  std::vector<Piece> pieces;
+  for (std::uint32_t i = 0; i < lines.size(); ++i) {
+    CutLine(lines[i], i, spec, max_pieces, max_trim, layout.min_piece_length, pieces);
+  }
+  const ViewpointIndex index(layout.viewpoints, layout.max_view_distance);
+  const std::vector<std::vector<std::uint32_t>> views =
+      VisibleViews(pieces, lines, layout, index, spec);
+
+  SyntheticScene out;
+  out.spec = spec;
+  out.interior = layout.interior;
+  out.ground_truth_volume = layout.volume;
+  for (const Vec3& v : layout.viewpoints) out.scene.viewpoints.push_back(v);
+  out.scene.planes = layout.solid.planes();
+  AddVisiblePieces(pieces, lines, views, layout, spec, out);
+  AddOutliers(layout, index, spec, out);
   if (spec.residual_split) SplitByObservation(spec, out);
   out.ground_truth = layout.solid.ToPolygonMesh();
-  if (spec.offset != 0.0) {
-    const Vec3 shift(spec.offset, spec.offset, 0.0);
-    for (Segment3& s : scene.segments) {
-      s.p1 += shift;
-      s.p2 += shift;
-    }
-    for (Vec3& v : scene.viewpoints) v += shift;
-    for (Plane3& p : scene.planes) p.point += shift;
-    for (Vec3& v : out.ground_truth.vertices) v += shift;
-  }
-  out.true_planes = scene.planes.raw();
+  ApplyOffset(spec, out);
+  out.true_planes = out.scene.planes.raw();
   return out;
 }
 
