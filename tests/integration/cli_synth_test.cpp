@@ -4,11 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
-#include "engine/io/mesh_io.h"
-#include "engine/io/reference_json.h"
+#include "linesurf/linesurf.h"
 #include "tests/support/cli_runner.h"
-#include "tests/support/mesh_checks.h"
 #include "tests/support/test_paths.h"
 
 namespace linesurf {
@@ -64,18 +63,23 @@ TEST_F(CliSynth, TheExampleCommandWritesTheBundledExampleOnAnyCompiler) {
 TEST_F(CliSynth, FilesReadBackIntoASceneWithTruePlanesAndAClosedMesh) {
   ASSERT_EQ(RunLinesurf("synth cube --seed 1 -o " + ShellQuote(dir_.string()), dir_), 0)
       << Slurp(dir_ / "stderr.txt");
-  Expected<Scene> scene = io::ReadReferenceJson(dir_ / "lines.json");
-  ASSERT_TRUE(scene.has_value()) << scene.error().ToString();
-  EXPECT_EQ(scene->segments.size(), 12u);
-  EXPECT_EQ(scene->planes.size(), 6u);
-  ASSERT_EQ(scene->memberships.size(), 12u);
-  for (const PlaneMembership& m : scene->memberships) EXPECT_EQ(m.count, 2);
-  Expected<PolygonMesh> mesh = io::ReadMesh(dir_ / "ground_truth.ply");
+  Expected<ReadSceneResult> read = ReadScene((dir_ / "lines.json").string());
+  ASSERT_TRUE(read.has_value()) << read.error().ToString();
+  const SceneData& scene = read->scene;
+  EXPECT_EQ(scene.segments.size(), 12u);
+  EXPECT_EQ(scene.planes.size(), 6u);
+  ASSERT_TRUE(scene.has_memberships);
+  std::vector<int> planes_per_segment(scene.segments.size(), 0);
+  for (const Membership& m : scene.memberships) ++planes_per_segment.at(m.segment);
+  for (int count : planes_per_segment) EXPECT_EQ(count, 2);
+  Expected<Mesh> mesh = ReadMesh((dir_ / "ground_truth.ply").string());
   ASSERT_TRUE(mesh.has_value()) << mesh.error().ToString();
-  const testing::MeshCheckReport r = testing::CheckMesh(*mesh);
-  EXPECT_TRUE(r.closed);
-  EXPECT_TRUE(r.outward_oriented);
-  EXPECT_NEAR(r.volume, 8.0, 1e-9);
+  Expected<MeshValidity> validity = CheckMesh(*mesh);
+  ASSERT_TRUE(validity.has_value()) << validity.error().ToString();
+  EXPECT_TRUE(validity->closed);
+  EXPECT_TRUE(validity->two_manifold);
+  EXPECT_TRUE(validity->outward);
+  EXPECT_NEAR(validity->signed_volume, 8.0, 1e-9);
   const std::string meta = Slurp(dir_ / "meta.json");
   EXPECT_NE(meta.find("\"family\": \"cube\""), std::string::npos);
   EXPECT_NE(meta.find("\"structural\": 12"), std::string::npos) << meta.substr(0, 800);
