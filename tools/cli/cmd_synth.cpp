@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace linesurf::cli {
 namespace {
@@ -22,6 +23,7 @@ struct SynthArgs {
   int outlier_count = -1;
   int max_pieces = 0;
   double max_trim = -1.0;
+  std::vector<double> rotate;
   std::string out_dir;
 };
 
@@ -37,6 +39,10 @@ int RunSynth(const SynthArgs& args, const CommonOptions& common) {
   if (args.outlier_count >= 0) spec.outlier_count = args.outlier_count;
   if (args.max_pieces > 0) spec.max_pieces = args.max_pieces;
   if (args.max_trim >= 0.0) spec.max_trim = args.max_trim;
+  if (!args.rotate.empty()) {
+    spec.rotation_axis = {args.rotate[0], args.rotate[1], args.rotate[2]};
+    spec.rotation_degrees = args.rotate[3];
+  }
   if (Status valid = spec.Validate(); !valid) return ReportError(valid.error());
 
   const std::filesystem::path dir(args.out_dir);
@@ -129,8 +135,19 @@ Command AddSynthCommand(CLI::App& app, CommonOptions& common) {
                       "Views per segment: nearest viewpoints that see it, at most N")
       ->default_val(8)
       ->check(Between(1, 64));
+  cmd.app->add_option("--scale", args->spec.scale,
+                      "Output units per metre (100: centimetres): everything scaled about the "
+                      "origin, noise included")
+      ->default_val(1.0)
+      ->check(Between(1e-3, 1e3));
+  cmd.app->add_option("--rotate", args->rotate,
+                      "AX,AY,AZ,DEGREES: everything turned about the origin around that axis, "
+                      "after --scale (an up axis other than z; meta.json gives the up)")
+      ->delimiter(',')
+      ->expected(4);
   cmd.app->add_option("--offset", args->spec.offset,
-                      "Metres added to x and y of everything (georeferenced-like coordinates)")
+                      "Added to x and y of everything after --scale and --rotate, output units "
+                      "(georeferenced-like coordinates)")
       ->default_val(0.0);
   cmd.app->add_flag("--residual-split", args->spec.residual_split,
                     "One sub-segment per observation with that one view, shrunk by 5 % (as the "

@@ -4,6 +4,7 @@
 /// seed and the artefacts of real line clouds to imitate. Plain types only, so the front ends
 /// that describe a scene need no engine header.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -62,8 +63,17 @@ struct SynthSpec {
   bool residual_split = false;
   /// Residual split: largest share of a segment one camera misses at each end, [0, 0.45].
   double max_view_trim = 0.25;
-  /// Metres added to x and y of everything (segments, viewpoints, mesh, planes) to mimic
-  /// georeferenced coordinates; |offset| <= 1e7. The scene's world_from_local stays identity.
+  /// Output units per metre, in [1e-3, 1e3] (100: centimetres, 3.28084: feet): segments,
+  /// viewpoints, planes, mesh and noise are scaled about the origin, as SfM picks its own unit.
+  double scale = 1.0;
+  /// Everything turned about the origin by rotation_degrees ([-360, 360]) around rotation_axis
+  /// (finite, not zero; normalised), after the scale: an up axis other than z, as SfM picks its
+  /// own frame. The data's up is then the rotated z axis (meta.json "up").
+  std::array<double, 3> rotation_axis{0.0, 0.0, 1.0};
+  double rotation_degrees = 0.0;
+  /// Added to x and y of everything (segments, viewpoints, mesh, planes), after the scale and
+  /// the rotation, in output units, to mimic georeferenced coordinates; |offset| <= 1e7. The
+  /// scene's world_from_local stays identity.
   double offset = 0.0;
 
   /// Checks every field; names the first offending one.

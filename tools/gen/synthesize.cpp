@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -37,6 +38,9 @@ constexpr int kMaxPieces = 16;
 constexpr double kMaxTrim = 0.4;
 constexpr int kMaxViews = 64;
 constexpr double kMaxOffset = 1e7;
+constexpr double kMinScale = 1e-3;
+constexpr double kMaxScale = 1e3;
+constexpr double kMaxRotationDegrees = 360.0;
 constexpr double kMaxViewTrim = 0.45;
 /// The reference converter shrinks every sub-segment by 5 % of its length, 2.5 % at each end.
 constexpr double kResidualShrink = 0.025;
@@ -380,6 +384,32 @@ void AddOutliers(const FamilyLayout& layout,
   }
 }
 
+/// The frame of the spec: x -> R (scale x) with R the rotation of spec (identity by default).
+Eigen::Matrix3d FrameRotation(const SynthSpec& spec) {
+  const Vec3 axis(spec.rotation_axis[0], spec.rotation_axis[1], spec.rotation_axis[2]);
+  return Eigen::AngleAxisd(spec.rotation_degrees * std::numbers::pi / 180.0, axis.normalized())
+      .toRotationMatrix();
+}
+
+/// Scales and turns everything about the origin (spec.scale, spec.rotation_*); the default frame
+/// leaves every bit as it is.
+void ApplyScaleAndRotation(const SynthSpec& spec, SyntheticScene& out) {
+  if (spec.scale == 1.0 && spec.rotation_degrees == 0.0) return;
+  const Eigen::Matrix3d rotation = FrameRotation(spec);
+  const auto move = [&](const Vec3& p) -> Vec3 { return rotation * (spec.scale * p); };
+  for (Segment3& s : out.scene.segments) {
+    s.p1 = move(s.p1);
+    s.p2 = move(s.p2);
+  }
+  for (Vec3& v : out.scene.viewpoints) v = move(v);
+  for (Plane3& p : out.scene.planes) {
+    p.point = move(p.point);
+    p.normal = (rotation * p.normal).normalized();
+  }
+  for (Vec3& v : out.ground_truth.vertices) v = move(v);
+  out.ground_truth_volume *= spec.scale * spec.scale * spec.scale;
+}
+
 /// Moves everything by spec.offset along x and y (georeferenced-like coordinates).
 void ApplyOffset(const SynthSpec& spec, SyntheticScene& out) {
   if (spec.offset == 0.0) return;
@@ -416,6 +446,7 @@ SyntheticScene Build(const SynthSpec& spec) {
   AddOutliers(layout, index, spec, out);
   if (spec.residual_split) SplitByObservation(spec, out);
   out.ground_truth = layout.solid.ToPolygonMesh();
+  ApplyScaleAndRotation(spec, out);
   ApplyOffset(spec, out);
   out.true_planes = out.scene.planes.raw();
   return out;
@@ -483,7 +514,24 @@ Status SynthSpec::Validate() const {
         kInvalidOptions,
         kSynthesizeStage,
         "offset: " << offset << " is outside [-" << kMaxOffset << ", " << kMaxOffset << "]");
+    LINESURF_THROW_IF(!(scale >= kMinScale && scale <= kMaxScale), kInvalidOptions,
+                      kSynthesizeStage,
+                      "scale: " << scale << " is outside [" << kMinScale << ", " << kMaxScale
+                                << "]");
+    const Vec3 axis(rotation_axis[0], rotation_axis[1], rotation_axis[2]);
+    LINESURF_THROW_IF(!axis.allFinite() || axis.norm() == 0.0, kInvalidOptions, kSynthesizeStage,
+                      "rotation_axis: must be finite and not zero");
+    LINESURF_THROW_IF(!(std::abs(rotation_degrees) <= kMaxRotationDegrees), kInvalidOptions,
+                      kSynthesizeStage,
+                      "rotation_degrees: " << rotation_degrees << " is outside [-"
+                                           << kMaxRotationDegrees << ", " << kMaxRotationDegrees
+                                           << "]");
   });
+}
+
+std::array<double, 3> UpDirection(const SynthSpec& spec) {
+  const Vec3 up = FrameRotation(spec) * Vec3::UnitZ();
+  return {up.x(), up.y(), up.z()};
 }
 
 int CityBuildingCount(const SynthSpec& spec) {

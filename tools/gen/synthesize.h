@@ -12,6 +12,7 @@
 /// Determinism: the same spec (including the seed) gives identical output on every run and for
 /// every thread count (counter-based random streams, one per building / line / segment).
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +53,9 @@ struct SyntheticScene {
   /// True line pieces dropped because no viewpoint sees them.
   std::size_t num_hidden_dropped = 0;
 };
+
+/// The data's up direction in the frame of `spec`: the z axis turned by its rotation (unit).
+[[nodiscard]] std::array<double, 3> UpDirection(const SynthSpec& spec);
 
 /// Builds the scene described by `spec`. Errors: kInvalidOptions for a bad spec.
 [[nodiscard]] Expected<SyntheticScene> Synthesize(const SynthSpec& spec) noexcept;

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <numbers>
+
+#include <Eigen/Geometry>
+
 #include "tests/support/mesh_checks.h"
 #include "tools/gen/synthetic_meta.h"
 
@@ -387,6 +391,53 @@ TEST(Synthesize, OffsetShiftsEverythingInXY) {
     EXPECT_NEAR(b.true_planes[p].SignedDistance(a.true_planes[p].point + shift), 0.0, 1e-6);
   }
   EXPECT_TRUE(testing::IsClosed(b.ground_truth));
+}
+
+TEST(Synthesize, ScaleAndRotationMoveEverythingAsOneSimilarity) {
+  SynthSpec spec = Family("house");
+  spec.noise_sigma = 0.01;
+  spec.outlier_fraction = 0.05;
+  const SyntheticScene a = Make(spec);
+  spec.scale = 37.1;
+  spec.rotation_axis = {1.0, 2.0, 3.0};
+  spec.rotation_degrees = 70.0;
+  const SyntheticScene b = Make(spec);
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(70.0 * std::numbers::pi / 180.0, Vec3(1, 2, 3).normalized())
+          .toRotationMatrix();
+  const auto move = [&](const Vec3& p) -> Vec3 { return r * (37.1 * p); };
+  // The same segments, noise and views, moved: the random streams do not see the frame.
+  ASSERT_EQ(a.scene.segments.size(), b.scene.segments.size());
+  for (std::size_t i = 0; i < a.scene.segments.size(); ++i) {
+    EXPECT_NEAR((b.scene.segments[SegmentId(i)].p1 - move(a.scene.segments[SegmentId(i)].p1)).norm(),
+                0.0, 1e-9);
+    EXPECT_NEAR((b.scene.segments[SegmentId(i)].p2 - move(a.scene.segments[SegmentId(i)].p2)).norm(),
+                0.0, 1e-9);
+  }
+  EXPECT_EQ(a.scene.observations.offsets(), b.scene.observations.offsets());
+  ASSERT_EQ(a.true_planes.size(), b.true_planes.size());
+  for (std::size_t p = 0; p < a.true_planes.size(); ++p) {
+    EXPECT_NEAR((b.true_planes[p].normal - r * a.true_planes[p].normal).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(b.true_planes[p].SignedDistance(move(a.true_planes[p].point)), 0.0, 1e-9);
+  }
+  const testing::MeshCheckReport ra = testing::CheckMesh(a.ground_truth);
+  const testing::MeshCheckReport rb = testing::CheckMesh(b.ground_truth);
+  EXPECT_TRUE(rb.outward_oriented);
+  EXPECT_NEAR(rb.volume / ra.volume, 37.1 * 37.1 * 37.1, 1e-6);
+  EXPECT_NEAR(b.ground_truth_volume / a.ground_truth_volume, 37.1 * 37.1 * 37.1, 1e-9);
+  const std::array<double, 3> up = UpDirection(spec);
+  EXPECT_NEAR((Vec3(up[0], up[1], up[2]) - r * Vec3::UnitZ()).norm(), 0.0, 1e-15);
+  const std::string meta = SyntheticMetaJson(b);
+  EXPECT_NE(meta.find("\"scale\": 37.1"), std::string::npos);
+  EXPECT_NE(meta.find("\"up\""), std::string::npos);
+
+  SynthSpec bad = Family("house");
+  bad.scale = 0.0;
+  EXPECT_EQ(Synthesize(bad).error().code, ErrorCode::kInvalidOptions);
+  bad = Family("house");
+  bad.rotation_axis = {0.0, 0.0, 0.0};
+  bad.rotation_degrees = 10.0;
+  EXPECT_EQ(Synthesize(bad).error().code, ErrorCode::kInvalidOptions);
 }
 
 TEST(Synthesize, MetaJsonIsDeterministicAndListsEverySegment) {

@@ -38,8 +38,12 @@ std::string SyntheticMetaJson(const SyntheticScene& s) {
   js["max_views"] = spec.max_views;
   js["residual_split"] = spec.residual_split;
   js["max_view_trim"] = spec.max_view_trim;
+  js["scale"] = spec.scale;
+  js["rotation_axis"] = spec.rotation_axis;
+  js["rotation_degrees"] = spec.rotation_degrees;
   js["offset"] = spec.offset;
   j["spec"] = js;
+  j["up"] = UpDirection(spec);
   j["interior"] = s.interior;
   nlohmann::ordered_json gt;
   gt["volume"] = s.ground_truth_volume;
