@@ -1,0 +1,207 @@
+#!/usr/bin/env python3
+"""Dependence of the result on the frame: each scene is reconstructed as given and moved by a
+similarity (scaled by 37.1; turned 70 degrees about (1, 2, 3), so that its up axis is not z;
+both); each moved result is moved back and compared with the first one and with the ground
+truth. Writes tools/bench/tables/NAME.json, which make_tables.py renders into
+docs/design/real_data.md.
+
+Usage: tools/bench/frame_table.py --linesurf build/bin/linesurf --workdir /tmp/ft
+           [--name frame-dependence] [--machine TEXT] [-- RECONSTRUCT_OPTIONS...]
+Options after `--` go to every `linesurf reconstruct` (e.g. `-- --engine monolithic`).
+Python 3 standard library only. Scenes: the README example (house), synthetic city-16
+(seed 4016) and Andalusian when ../shared/data holds it (skipped with a message otherwise).
+"""
+
+import argparse
+import datetime
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+SHARED = REPO.parent / "shared"
+AXIS = (1.0, 2.0, 3.0)
+# The moves: name, scale, degrees about AXIS.
+MOVES = [("x37.1", 37.1, 0.0), ("70 deg", 1.0, 70.0), ("x37.1, 70 deg", 37.1, 70.0)]
+# Agreement of the two results and accuracy against the ground truth, metres of the scene as
+# given (the comparison is made after moving back).
+AGREEMENT_M = 0.01
+ACCURACY_M = 0.05
+
+
+def rotation(axis, degrees):
+    n = math.sqrt(sum(a * a for a in axis))
+    x, y, z = (a / n for a in axis)
+    t = math.radians(degrees)
+    c, s, k = math.cos(t), math.sin(t), 1.0 - math.cos(t)
+    return [[c + x * x * k, x * y * k - z * s, x * z * k + y * s],
+            [y * x * k + z * s, c + y * y * k, y * z * k - x * s],
+            [z * x * k - y * s, z * y * k + x * s, c + z * z * k]]
+
+
+class Move:
+    """x -> scale R x, R the rotation by `degrees` about AXIS."""
+
+    def __init__(self, scale, degrees):
+        self.scale = scale
+        self.r = rotation(AXIS, degrees)
+
+    def apply(self, p):
+        return [self.scale * sum(self.r[i][j] * p[j] for j in range(3)) for i in range(3)]
+
+    def turn(self, n):
+        return [sum(self.r[i][j] * n[j] for j in range(3)) for i in range(3)]
+
+    def back(self, p):  # R is orthogonal: the inverse is its transpose
+        return [sum(self.r[j][i] * p[j] for j in range(3)) / self.scale for i in range(3)]
+
+
+def moved_scene(m, src, dst):
+    """The reference JSON `src` with every point moved and every normal turned."""
+    scene = json.load(open(src))
+    for line in scene["lines"]:
+        line["pt1"] = m.apply(line["pt1"])
+        line["pt2"] = m.apply(line["pt2"])
+        line["pt_views"] = [m.apply(v) for v in line.get("pt_views", [])]
+    for plane in scene.get("planes", []):
+        for key in ("inlier", "point"):
+            if key in plane:
+                plane[key] = m.apply(plane[key])
+        if "normal" in plane:
+            plane["normal"] = m.turn(plane["normal"])
+    with open(dst, "w") as out:
+        json.dump(scene, out)
+
+
+def obj_moved_back(m, src, dst):
+    with open(src) as inp, open(dst, "w") as out:
+        for line in inp:
+            if line.startswith("v "):
+                p = m.back([float(v) for v in line.split()[1:4]])
+                out.write("v %r %r %r\n" % tuple(p))
+            else:
+                out.write(line)
+
+
+def run(cmd):
+    subprocess.run([str(c) for c in cmd], check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.PIPE)
+
+
+def evaluate(linesurf, result, reference, threshold):
+    out = Path(str(result) + ".eval.json")
+    run([linesurf, "-q", "evaluate", result, reference, "--thresholds", threshold, "--json", out])
+    e = json.load(open(out))
+    return 100.0 * e["precision"][0], 100.0 * e["completeness"][0]
+
+
+def scenes(work, linesurf):
+    example = REPO / "docs" / "examples" / "house"
+    yield "README example (house)", example / "lines.json", example / "ground_truth.ply"
+    city = work / "city-16"
+    if not (city / "lines.json").exists():
+        run([linesurf, "synth", "city", "--size", "16", "--seed", "4016", "-o", city])
+    yield "synthetic city-16 (seed 4016)", city / "lines.json", city / "ground_truth.ply"
+    andalusian = SHARED / "data" / "andalusian" / "input_lines_from_residuals.json"
+    if andalusian.exists():
+        yield "Andalusian", andalusian, None
+    else:
+        print("frame_table: Andalusian absent from %s, skipped" % andalusian, file=sys.stderr)
+
+
+def reconstruct(linesurf, extra, scene, stem):
+    start = time.monotonic()
+    run([linesurf, "-q", "reconstruct", scene, "-o", str(stem) + ".obj",
+         "--report", str(stem) + ".json"] + extra)
+    report = json.load(open(str(stem) + ".json"))
+    report["seconds"] = time.monotonic() - start
+    return report
+
+
+def measure(linesurf, extra, work, key, name, scene, ground_truth):
+    """One row per move of the scene."""
+    base_obj = work / (key + ".base.obj")
+    base = reconstruct(linesurf, extra, scene, work / (key + ".base"))
+    base_accuracy = evaluate(linesurf, base_obj, ground_truth, ACCURACY_M) if ground_truth else None
+    rows = []
+    for index, (move_name, scale, degrees) in enumerate(MOVES):
+        m = Move(scale, degrees)
+        stem = work / ("%s.move%d" % (key, index))
+        moved_scene(m, scene, str(stem) + ".lines.json")
+        moved = reconstruct(linesurf, extra, str(stem) + ".lines.json", stem)
+        back = Path(str(stem) + ".back.obj")
+        obj_moved_back(m, str(stem) + ".obj", back)
+        rows.append({
+            "scene": name,
+            "move": move_name,
+            "planes": [base["counts"]["planes"], moved["counts"]["planes"]],
+            "components": [base["quality"]["num_components"], moved["quality"]["num_components"]],
+            "fragments": [base["quality"]["floating_fragments"],
+                          moved["quality"]["floating_fragments"]],
+            "volume": 100.0 * (moved["quality"]["enclosed_volume"] / scale ** 3 /
+                               base["quality"]["enclosed_volume"] - 1.0),
+            "epsilon": [base["epsilon"]["epsilon"], moved["epsilon"]["epsilon"] / scale],
+            "agreement": list(evaluate(linesurf, back, base_obj, AGREEMENT_M)),
+            "accuracy": (list(base_accuracy + evaluate(linesurf, back, ground_truth, ACCURACY_M))
+                         if ground_truth else None),
+        })
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--linesurf", default=str(REPO / "build" / "bin" / "linesurf"))
+    parser.add_argument("--workdir", required=True)
+    parser.add_argument("--machine", default="")
+    parser.add_argument("--name", default="frame-dependence")
+    parser.add_argument("extra", nargs="*", help="options of linesurf reconstruct (after --)")
+    args = parser.parse_args()
+    work = Path(args.workdir)
+    work.mkdir(parents=True, exist_ok=True)
+    rows = []
+    for index, (name, scene, ground_truth) in enumerate(scenes(work, args.linesurf)):
+        rows += measure(args.linesurf, args.extra, work, "scene%d" % index, name, scene,
+                        ground_truth)
+    commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "HEAD"], check=True,
+                            capture_output=True, text=True).stdout.strip()
+    now = datetime.datetime.now(datetime.timezone.utc)
+    table = {
+        "doc": "docs/design/real_data.md",
+        "title": "The same scene in another frame (reconstruct options: %s)"
+                 % (" ".join(args.extra) or "defaults"),
+        "measured": {
+            "date": now.strftime("%Y-%m-%d"), "time_utc": now.strftime("%H:%M"),
+            "machine": args.machine or os.uname().nodename, "commit": commit,
+            "command": "python3 tools/bench/frame_table.py --linesurf %s --workdir %s --name %s%s"
+                       % (os.path.relpath(args.linesurf, REPO), args.workdir, args.name,
+                          " -- " + " ".join(args.extra) if args.extra else "")},
+        "columns": [
+            {"key": "scene", "header": "scene"},
+            {"key": "move", "header": "moved by"},
+            {"key": "planes", "header": "planes: given frame / moved", "format": "{} / {}"},
+            {"key": "components", "header": "components", "format": "{} / {}"},
+            {"key": "fragments", "header": "floating fragments", "format": "{} / {}"},
+            {"key": "volume", "header": "volume moved back vs given", "format": "{:+.2f} %"},
+            {"key": "epsilon", "header": "eps (scene units of the given frame)",
+             "format": "{:.4g} / {:.4g}"},
+            {"key": "agreement",
+             "header": "moved-back result within 1 cm of the given frame's: precision / "
+                       "completeness", "format": "{:.1f} / {:.1f} %"},
+            {"key": "accuracy",
+             "header": "P / C at 5 cm against the ground truth: given frame; moved back",
+             "format": "{:.1f} / {:.1f}; {:.1f} / {:.1f} %"},
+        ],
+        "rows": rows,
+    }
+    out = REPO / "tools" / "bench" / "tables" / (args.name + ".json")
+    out.write_text(json.dumps(table, indent=2) + "\n", encoding="utf-8")
+    print("wrote", out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
