@@ -6,8 +6,13 @@
 #include <vector>
 
 #include "engine/core/geometry.h"
+#include "engine/core/strong_id.h"
 
 namespace linesurf {
+
+/// A vertex of a PolygonMesh (an index into `vertices`; the face lists store its value).
+struct MeshVertexTag {};
+using MeshVertexId = StrongId<MeshVertexTag>;
 
 struct PolygonMesh {
   std::vector<Vec3> vertices;

@@ -44,8 +44,8 @@ struct RawCorner {
   Rank rank;
   Vec3 point;
   /// Global id of the block edge leaving this corner when that edge is off the shared faces (its
-  /// star in the block is complete), else kNoIndex and the edge lies on the line of (p, q).
-  std::uint32_t edge = kNoIndex;
+  /// star in the block is complete), else invalid and the edge lies on the line of (p, q).
+  SurfaceEdgeId edge;
   PlaneKey p;
   PlaneKey q;
 };
@@ -62,7 +62,7 @@ struct RawFace {
 struct BlockPart {
   std::vector<RawFace> faces;
   std::vector<RawCorner> corners;
-  std::vector<std::uint32_t> face_of_facet;  ///< local face of each facet of the block
+  std::vector<SurfaceFaceId> face_of_facet;  ///< local face of each facet of the block
   std::vector<std::uint8_t> seam_facet;      ///< facets on shared faces (replaced by the overlay)
 };
 
@@ -103,7 +103,7 @@ class Collector {
     const BlockComplex& block = cx_.blocks[b];
     const CellComplex& c = block.complex;
     BlockPart part;
-    part.face_of_facet.assign(c.NumFacets(), kNoIndex);
+    part.face_of_facet.assign(c.NumFacets(), SurfaceFaceId::Invalid());
     part.seam_facet.assign(c.NumFacets(), 0);
     for (std::size_t f = 0; f < c.NumFacets(); ++f) {
       part.seam_facet[f] = block.facet_kind[FacetId(f)] == FacetKind::kSeam ? 1 : 0;
@@ -132,11 +132,11 @@ class Collector {
         RawCorner corner{partition::BlockVertexKey(block, v),
                          {2 * std::uint64_t{b}, v.value()},
                          c.vertex_points[v],
-                         kNoIndex,
+                         SurfaceEdgeId::Invalid(),
                          {},
                          {}};
         if (on_seam[e.index()] == 0) {
-          corner.edge = edge_offset + e.value();
+          corner.edge = SurfaceEdgeId(edge_offset + e.value());
         } else {
           corner.p = block.plane_keys[plane];
           corner.q = block.plane_keys[c.facet_plane[OtherFacetOfCell(c, f, e)].index()];
@@ -144,7 +144,7 @@ class Collector {
         part.corners.push_back(corner);
       }
       face.end = static_cast<std::uint32_t>(part.corners.size());
-      part.face_of_facet[fi] = static_cast<std::uint32_t>(part.faces.size());
+      part.face_of_facet[fi] = SurfaceFaceId(part.faces.size());
       part.faces.push_back(face);
     }
     std::uint64_t seam_corner = 0;
@@ -170,7 +170,7 @@ class Collector {
           part.corners.push_back({facet.vertices[iv],
                                   {2 * std::uint64_t{b} + 1, seam_corner++},
                                   facet.points[iv],
-                                  kNoIndex,
+                                  SurfaceEdgeId::Invalid(),
                                   key,
                                   facet.edge_planes[ie]});
         }
@@ -225,6 +225,10 @@ class PointGrid {
   std::vector<std::pair<Cell3, std::uint32_t>> entries_;
 };
 
+/// A distinct vertex triple among the corners (MergeVertices).
+struct DistinctKeyTag {};
+using DistinctKeyId = StrongId<DistinctKeyTag>;
+
 /// The vertices of the surface: one per point, whichever triples name it.
 struct MergedVertices {
   std::vector<std::uint32_t> of_corner;  ///< vertex of every raw corner (in part order)
@@ -272,12 +276,12 @@ MergedVertices MergeVertices(const BlockComplexes& cx,
         });
   }
   // A point's vertex is numbered by the earliest occurrence among its triples.
-  std::vector<std::uint32_t> earliest(n, kNoIndex);
+  std::vector<DistinctKeyId> earliest(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::size_t root = sets.Find(i);
-    if (earliest[root] == kNoIndex ||
-        corners[first[i]]->rank < corners[first[earliest[root]]]->rank) {
-      earliest[root] = i;
+    if (!earliest[root].IsValid() ||
+        corners[first[i]]->rank < corners[first[earliest[root].index()]]->rank) {
+      earliest[root] = DistinctKeyId(i);
     }
   }
   std::vector<std::uint32_t> roots;
@@ -285,13 +289,13 @@ MergedVertices MergeVertices(const BlockComplexes& cx,
     if (sets.Find(i) == i) roots.push_back(i);
   }
   std::sort(roots.begin(), roots.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return corners[first[earliest[a]]]->rank < corners[first[earliest[b]]]->rank;
+    return corners[first[earliest[a].index()]]->rank < corners[first[earliest[b].index()]]->rank;
   });
   MergedVertices out;
-  std::vector<std::uint32_t> vertex_of_root(n, kNoIndex);
+  std::vector<CandidateVertexId> vertex_of_root(n);
   for (const std::uint32_t r : roots) {
-    vertex_of_root[r] = static_cast<std::uint32_t>(out.keys.size());
-    const RawCorner& c = *corners[first[earliest[r]]];
+    vertex_of_root[r] = CandidateVertexId(out.keys.size());
+    const RawCorner& c = *corners[first[earliest[r].index()]];
     out.keys.push_back(c.key);
     out.points.push_back(c.point);
     out.on_face.push_back(partition::OnSomeBlockFace(c.key) ? 1 : 0);
@@ -299,7 +303,7 @@ MergedVertices MergeVertices(const BlockComplexes& cx,
   out.merged_keys = n - roots.size();
   out.of_corner.resize(corners.size());
   for (std::size_t c = 0; c < corners.size(); ++c) {
-    out.of_corner[c] = vertex_of_root[sets.Find(distinct_of_corner[c])];
+    out.of_corner[c] = vertex_of_root[sets.Find(distinct_of_corner[c])].value();
   }
   return out;
 }
@@ -317,7 +321,7 @@ struct LineCorner {
 /// One face's corners after vertices on its edges are inserted.
 struct SubdividedFace {
   std::vector<std::uint32_t> vertices;
-  std::vector<std::uint32_t> edges;  ///< block edge id, or kNoIndex for an edge on a face
+  std::vector<SurfaceEdgeId> edges;  ///< block edge id, or invalid for an edge on a face
   std::vector<std::pair<PlaneKey, PlaneKey>> lines;
 };
 
@@ -340,7 +344,7 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
     out.vertices.push_back(u);
     out.edges.push_back(c.edge);
     out.lines.push_back({c.p, c.q});
-    if (c.edge != kNoIndex) continue;
+    if (c.edge.IsValid()) continue;
     const KeySegment segment{mv.keys[u], mv.keys[v], c.p, c.q};
     const Vec3 pad = Vec3::Constant(distance);
     const Vec3 lo = mv.points[u].cwiseMin(mv.points[v]) - pad;
@@ -360,7 +364,7 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
       const auto it = std::find_if(
           inside.begin(), inside.end(), [&](std::uint32_t w) { return mv.keys[w] == key; });
       out.vertices.push_back(*it);
-      out.edges.push_back(kNoIndex);
+      out.edges.push_back(SurfaceEdgeId::Invalid());
       out.lines.push_back({c.p, c.q});
     }
   }
@@ -374,19 +378,19 @@ SubdividedFace Subdivide(const BlockComplexes& cx,
 std::vector<FlatJoin> FlatJoins(const SurfaceCycles& s,
                                 const std::vector<const RawFace*>& faces,
                                 const std::vector<EdgePair>& crowded) {
-  std::vector<std::uint32_t> crowded_edges;
+  std::vector<SurfaceEdgeId> crowded_edges;
   for (const EdgePair& p : crowded) crowded_edges.push_back(p.edge);
   std::sort(crowded_edges.begin(), crowded_edges.end());
   std::vector<FlatJoin> joins;
   for (std::uint32_t f = 0; f < s.NumFaces(); ++f) {
     for (std::uint32_t k = s.offsets[f]; k < s.offsets[f + 1]; ++k) {
-      const std::uint32_t g = s.partner[k];
-      if (g == kNoIndex || g <= f || faces[f]->plane != faces[g]->plane ||
-          faces[f]->normal != faces[g]->normal ||
+      const SurfaceFaceId g = s.partner[k];
+      if (!g.IsValid() || g.value() <= f || faces[f]->plane != faces[g.index()]->plane ||
+          faces[f]->normal != faces[g.index()]->normal ||
           std::binary_search(crowded_edges.begin(), crowded_edges.end(), s.corner_edge[k])) {
         continue;
       }
-      joins.push_back({s.corner_edge[k], f, g});
+      joins.push_back({s.corner_edge[k], SurfaceFaceId(f), g});
     }
   }
   return joins;
@@ -411,7 +415,7 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
     std::size_t j = i;
     while (j < line_corners.size() && line_corners[j].lo == line_corners[i].lo &&
            line_corners[j].hi == line_corners[i].hi) {
-      s.corner_edge[line_corners[j].corner] = edge;
+      s.corner_edge[line_corners[j].corner] = SurfaceEdgeId(edge);
       ++j;
     }
     const std::size_t m = j - i;
@@ -428,8 +432,8 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
           kInternal,
           kExtractBlockSurfaceStage,
           "the two faces on an edge are not oriented alike");
-      const std::uint32_t a = line_corners[i].face;
-      const std::uint32_t b = line_corners[i + 1].face;
+      const SurfaceFaceId a(line_corners[i].face);
+      const SurfaceFaceId b(line_corners[i + 1].face);
       s.partner[line_corners[i].corner] = b;
       s.partner[line_corners[i + 1].corner] = a;
     } else {
@@ -452,9 +456,9 @@ std::pair<std::size_t, std::size_t> PairOnFaces(const BlockComplexes& cx,
                           kExtractBlockSurfaceStage,
                           "faces around an edge on a block face do not alternate");
         const LineCorner& b = line_corners[i + next];
-        s.partner[a.corner] = b.face;
-        s.partner[b.corner] = a.face;
-        crowded.push_back({edge, a.face, b.face});
+        s.partner[a.corner] = SurfaceFaceId(b.face);
+        s.partner[b.corner] = SurfaceFaceId(a.face);
+        crowded.push_back({SurfaceEdgeId(edge), SurfaceFaceId(a.face), SurfaceFaceId(b.face)});
       }
     }
     i = j;
@@ -559,8 +563,8 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
         const auto corner = static_cast<std::uint32_t>(s.corner_vertex.size());
         s.corner_vertex.push_back(sub.vertices[k]);
         s.corner_edge.push_back(sub.edges[k]);
-        s.partner.push_back(kNoIndex);
-        if (sub.edges[k] == kNoIndex) {
+        s.partner.push_back(SurfaceFaceId::Invalid());
+        if (!sub.edges[k].IsValid()) {
           const std::uint32_t a = sub.vertices[k];
           const std::uint32_t b = sub.vertices[(k + 1) % n];
           line_corners.push_back({std::min(a, b),
@@ -582,9 +586,9 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
     RunInArena(ctx, [&] {
       tbb::parallel_for(std::size_t{0}, num_blocks, [&](std::size_t b) {
         const CellComplex& c = cx.blocks[b].complex;
-        std::vector<std::uint32_t> face_of_facet = parts[b].face_of_facet;
-        for (std::uint32_t& f : face_of_facet) {
-          if (f != kNoIndex) f += block_first_face[b];
+        std::vector<SurfaceFaceId> face_of_facet = parts[b].face_of_facet;
+        for (SurfaceFaceId& f : face_of_facet) {
+          if (f.IsValid()) f = SurfaceFaceId(f.value() + block_first_face[b]);
         }
         block_non_manifold[b] =
             PairAroundComplexEdges(c,
@@ -627,9 +631,9 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
       result.face_facet.push_back(faces[first_face[f]]->ref);
     }
     result.vertex_key.reserve(surface.vertex_source.size());
-    for (const std::uint32_t v : surface.vertex_source) {
-      result.vertex_key.push_back(v == kNoIndex ? std::nullopt
-                                                : std::optional<VertexKey>(mv.keys[v]));
+    for (const CandidateVertexId v : surface.vertex_source) {
+      result.vertex_key.push_back(v.IsValid() ? std::optional<VertexKey>(mv.keys[v.index()])
+                                              : std::nullopt);
     }
     return result;
   });

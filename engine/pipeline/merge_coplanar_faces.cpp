@@ -13,9 +13,9 @@ namespace {
 std::vector<std::uint32_t> TraceBoundary(const SurfaceCycles& s,
                                          const std::vector<std::uint32_t>& members,
                                          const std::vector<std::uint32_t>& group_of_face,
-                                         const std::vector<std::uint32_t>& join_edges,
+                                         const std::vector<SurfaceEdgeId>& join_edges,
                                          const std::vector<std::uint32_t>& uses) {
-  const auto is_join = [&](std::uint32_t e) {
+  const auto is_join = [&](SurfaceEdgeId e) {
     return std::binary_search(join_edges.begin(), join_edges.end(), e);
   };
   const std::uint32_t group = group_of_face[members.front()];
@@ -25,7 +25,7 @@ std::vector<std::uint32_t> TraceBoundary(const SurfaceCycles& s,
     for (std::uint32_t k = s.offsets[f]; k < s.offsets[f + 1]; ++k) {
       vertices.push_back(s.corner_vertex[k]);
       if (is_join(s.corner_edge[k])) continue;
-      if (s.partner[k] == kNoIndex || group_of_face[s.partner[k]] == group) {
+      if (!s.partner[k].IsValid() || group_of_face[s.partner[k].index()] == group) {
         return {};  // unpaired (the back end reports it), or members meeting across a non-join
       }
       starts.push_back({s.corner_vertex[k], k});
@@ -48,8 +48,8 @@ std::vector<std::uint32_t> TraceBoundary(const SurfaceCycles& s,
     i = j;
   }
   const auto face_of = [&](std::uint32_t k) {
-    return static_cast<std::uint32_t>(std::upper_bound(s.offsets.begin(), s.offsets.end(), k) -
-                                      s.offsets.begin() - 1);
+    return SurfaceFaceId(static_cast<std::uint32_t>(
+        std::upper_bound(s.offsets.begin(), s.offsets.end(), k) - s.offsets.begin() - 1));
   };
   std::vector<std::uint32_t> cycle;
   std::uint32_t first =
@@ -77,9 +77,9 @@ MergedCycles MergeAcrossJoins(const SurfaceCycles& s,
                               std::size_t num_vertices) {
   const std::size_t num_faces = s.NumFaces();
   DisjointSets sets(num_faces);
-  std::vector<std::uint32_t> join_edges;
+  std::vector<SurfaceEdgeId> join_edges;
   for (const FlatJoin& j : joins) {
-    sets.Union(j.a, j.b);
+    sets.Union(j.a.index(), j.b.index());
     join_edges.push_back(j.edge);
   }
   std::sort(join_edges.begin(), join_edges.end());
@@ -99,21 +99,22 @@ MergedCycles MergeAcrossJoins(const SurfaceCycles& s,
     }
   }
   MergedCycles out;
-  std::vector<std::uint32_t> new_face(num_faces, kNoIndex);
+  std::vector<SurfaceFaceId> new_face(num_faces);
   for (std::uint32_t f = 0; f < num_faces; ++f) {
     const std::uint32_t g = group_of_face[f];
     if (!boundary[g].empty() && f != members[g].front()) {
       new_face[f] = new_face[members[g].front()];
       continue;
     }
-    new_face[f] = static_cast<std::uint32_t>(out.first_face.size());
+    new_face[f] = SurfaceFaceId(out.first_face.size());
     out.first_face.push_back(f);
   }
   SurfaceCycles& c = out.cycles;
   const auto add_corner = [&](std::uint32_t k) {
     c.corner_vertex.push_back(s.corner_vertex[k]);
     c.corner_edge.push_back(s.corner_edge[k]);
-    c.partner.push_back(s.partner[k] == kNoIndex ? kNoIndex : new_face[s.partner[k]]);
+    c.partner.push_back(s.partner[k].IsValid() ? new_face[s.partner[k].index()]
+                                               : SurfaceFaceId::Invalid());
   };
   for (const std::uint32_t f : out.first_face) {
     const std::uint32_t g = group_of_face[f];
@@ -125,7 +126,9 @@ MergedCycles MergeAcrossJoins(const SurfaceCycles& s,
     }
     c.offsets.push_back(static_cast<std::uint32_t>(c.corner_vertex.size()));
   }
-  for (const EdgePair& p : crowded) out.crowded.push_back({p.edge, new_face[p.a], new_face[p.b]});
+  for (const EdgePair& p : crowded) {
+    out.crowded.push_back({p.edge, new_face[p.a.index()], new_face[p.b.index()]});
+  }
   return out;
 }
 

@@ -13,9 +13,9 @@ namespace linesurf::pipeline {
 
 /// Two faces on one plane, on the same side of it, that are the only faces on edge `edge`.
 struct FlatJoin {
-  std::uint32_t edge;
-  std::uint32_t a;
-  std::uint32_t b;
+  SurfaceEdgeId edge;
+  SurfaceFaceId a;
+  SurfaceFaceId b;
 };
 
 struct MergedCycles {

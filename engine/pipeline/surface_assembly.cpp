@@ -17,16 +17,10 @@ namespace {
 constexpr double kStraightCornerSine = 1e-9;
 
 /// Assigns an output vertex to every corner, one per umbrella of each candidate vertex.
-std::vector<std::uint32_t> AssignCornerVertices(std::size_t num_vertices,
-                                                const SurfaceCycles& s,
-                                                std::vector<std::uint32_t>& vertex_source) {
+std::vector<MeshVertexId> AssignCornerVertices(std::size_t num_vertices,
+                                               const SurfaceCycles& s,
+                                               std::vector<CandidateVertexId>& vertex_source) {
   const std::size_t num_corners = s.corner_vertex.size();
-  std::vector<std::uint32_t> face_of_corner(num_corners);
-  for (std::size_t f = 0; f + 1 < s.offsets.size(); ++f) {
-    for (std::uint32_t k = s.offsets[f]; k < s.offsets[f + 1]; ++k) {
-      face_of_corner[k] = static_cast<std::uint32_t>(f);
-    }
-  }
   // Corners grouped by vertex, in corner order within a vertex.
   for (const std::uint32_t v : s.corner_vertex) LINESURF_ASSERT(v < num_vertices);
   const auto by_vertex = Csr<std::uint32_t, std::uint32_t>::FromPairs(
@@ -34,21 +28,21 @@ std::vector<std::uint32_t> AssignCornerVertices(std::size_t num_vertices,
       num_corners,
       [&](std::size_t c) { return s.corner_vertex[c]; },
       [](std::size_t c) { return static_cast<std::uint32_t>(c); });
-  std::vector<std::uint32_t> corner_out(num_corners, kNoIndex);
+  std::vector<MeshVertexId> corner_out(num_corners);
   for (std::uint32_t v = 0; v < num_vertices; ++v) {
     for (const std::uint32_t start : by_vertex[v]) {
-      if (corner_out[start] != kNoIndex) continue;
+      if (corner_out[start].IsValid()) continue;
       // Walk: leave the corner through its outgoing edge, enter the partner face, whose edge is
       // incoming to this vertex; its next corner is this vertex again.
-      const auto id = static_cast<std::uint32_t>(vertex_source.size());
-      vertex_source.push_back(static_cast<std::uint32_t>(v));
+      const MeshVertexId id(vertex_source.size());
+      vertex_source.emplace_back(v);
       std::uint32_t c = start;
       std::size_t steps = 0;
       do {
         LINESURF_ASSERT(s.corner_vertex[c] == v && ++steps <= num_corners);
         corner_out[c] = id;
-        const std::uint32_t g = s.partner[c];
-        LINESURF_ASSERT(g != kNoIndex);
+        const SurfaceFaceId g = s.partner[c];
+        LINESURF_ASSERT(g.IsValid());
         c = s.NextCorner(g, s.EdgeSlot(g, s.corner_edge[c]));
       } while (c != start);
     }
@@ -62,19 +56,19 @@ std::vector<std::uint32_t> AssignCornerVertices(std::size_t num_vertices,
 /// umbrellas at the same points, so that all faces along the edge have a corner there: a
 /// midpoint in some pairs only would lie on the straight edge of the others (a T-junction, which
 /// self-intersection checks rightly report). Returns the vertex inserted after each corner (or
-/// kNoIndex).
-std::vector<std::uint32_t> SeparateSharedEdges(const SurfaceCycles& s,
-                                               std::span<const Vec3> points,
-                                               std::span<const EdgePair> crowded,
-                                               const std::vector<std::uint32_t>& corner_out,
-                                               std::vector<std::uint32_t>& vertex_source,
-                                               std::vector<Vec3>& extra_points) {
-  std::vector<std::uint32_t> inserted(s.corner_vertex.size(), kNoIndex);
+/// an invalid id).
+std::vector<MeshVertexId> SeparateSharedEdges(const SurfaceCycles& s,
+                                              std::span<const Vec3> points,
+                                              std::span<const EdgePair> crowded,
+                                              const std::vector<MeshVertexId>& corner_out,
+                                              std::vector<CandidateVertexId>& vertex_source,
+                                              std::vector<Vec3>& extra_points) {
+  std::vector<MeshVertexId> inserted(s.corner_vertex.size());
   /// A pair of the current edge: its two slots and the output vertices of the edge's ends.
   struct PairEnds {
     std::uint32_t slot_a;
     std::uint32_t slot_b;
-    std::pair<std::uint32_t, std::uint32_t> ends;
+    std::pair<MeshVertexId, MeshVertexId> ends;
   };
   std::vector<PairEnds> pairs;
   for (std::size_t i = 0; i < crowded.size();) {
@@ -84,8 +78,8 @@ std::vector<std::uint32_t> SeparateSharedEdges(const SurfaceCycles& s,
       const EdgePair& p = crowded[j];
       const std::uint32_t ka = s.EdgeSlot(p.a, p.edge);
       const std::uint32_t kb = s.EdgeSlot(p.b, p.edge);
-      std::uint32_t x = corner_out[ka];
-      std::uint32_t y = corner_out[s.NextCorner(p.a, ka)];
+      MeshVertexId x = corner_out[ka];
+      MeshVertexId y = corner_out[s.NextCorner(p.a, ka)];
       if (x > y) std::swap(x, y);
       pairs.push_back({ka, kb, {x, y}});
     }
@@ -99,8 +93,8 @@ std::vector<std::uint32_t> SeparateSharedEdges(const SurfaceCycles& s,
     });
     for (const PairEnds& p :
          shared ? std::span<const PairEnds>(pairs) : std::span<const PairEnds>()) {
-      const auto id = static_cast<std::uint32_t>(vertex_source.size());
-      vertex_source.push_back(kNoIndex);
+      const MeshVertexId id(vertex_source.size());
+      vertex_source.push_back(CandidateVertexId::Invalid());
       extra_points.push_back(midpoint);
       inserted[p.slot_a] = id;
       inserted[p.slot_b] = id;
@@ -146,7 +140,7 @@ void AddOutputFace(const std::vector<std::uint32_t>& face,
   centroid /= static_cast<double>(n);
   const auto c = static_cast<std::uint32_t>(mesh.vertices.size());
   mesh.vertices.push_back(centroid);
-  out.vertex_source.push_back(kNoIndex);
+  out.vertex_source.push_back(CandidateVertexId::Invalid());
   for (std::size_t k = 0; k < n; ++k) {
     mesh.AddFace(std::array<std::uint32_t, 3>{c, face[k], face[(k + 1) % n]});
     out.face_cycle.push_back(cycle);
@@ -163,29 +157,29 @@ void SurfaceCycles::AddCycle(std::span<const std::uint32_t> vertices,
   for (std::size_t k = 0; k < n; ++k) {
     if (!reverse) {
       corner_vertex.push_back(vertices[k]);
-      corner_edge.push_back(edges[k]);
+      corner_edge.emplace_back(edges[k]);
     } else {
       // Reversed: corner k is vertex n-1-k; the edge from it to vertex n-2-k is edge n-2-k.
       corner_vertex.push_back(vertices[n - 1 - k]);
-      corner_edge.push_back(edges[(2 * n - 2 - k) % n]);
+      corner_edge.emplace_back(edges[(2 * n - 2 - k) % n]);
     }
-    partner.push_back(kNoIndex);
+    partner.push_back(SurfaceFaceId::Invalid());
   }
   offsets.push_back(static_cast<std::uint32_t>(corner_vertex.size()));
 }
 
-std::uint32_t SurfaceCycles::EdgeSlot(std::uint32_t face, std::uint32_t edge) const {
-  for (std::uint32_t k = offsets[face]; k < offsets[face + 1]; ++k) {
-    if (corner_edge[k] == edge) return k;
-  }
-  LINESURF_ASSERT(false && "surface face does not hold its edge");
-  return kNoIndex;
+std::uint32_t SurfaceCycles::EdgeSlot(SurfaceFaceId face, SurfaceEdgeId edge) const {
+  const std::uint32_t end = offsets[face.index() + 1];
+  std::uint32_t k = offsets[face.index()];
+  while (k < end && corner_edge[k] != edge) ++k;
+  LINESURF_ASSERT(k < end && "surface face does not hold its edge");
+  return k;
 }
 
 std::size_t PairAroundComplexEdges(const CellComplex& cx,
                                    std::span<const std::uint8_t> labels,
                                    bool outside_full,
-                                   std::span<const std::uint32_t> face_of_facet,
+                                   std::span<const SurfaceFaceId> face_of_facet,
                                    std::uint32_t edge_offset,
                                    std::span<const std::uint8_t> skip_facet,
                                    SurfaceCycles& s,
@@ -214,20 +208,20 @@ std::size_t PairAroundComplexEdges(const CellComplex& cx,
     std::size_t surface_here = 0;
     for (std::size_t i = 0; i < k; ++i) {
       const bool on_surface = full[(i + k - 1) % k] != full[i];
-      const bool flagged = face_of_facet[facets[i].index()] != kNoIndex;
+      const bool flagged = face_of_facet[facets[i].index()].IsValid();
       LINESURF_ASSERT(on_surface == flagged);
       surface_here += on_surface ? 1 : 0;
     }
     if (surface_here == 0) continue;
     if (surface_here > 2) ++non_manifold;
-    const auto edge = static_cast<std::uint32_t>(edge_offset + ei);
+    const SurfaceEdgeId edge(edge_offset + ei);
     for (std::size_t i = 0; i < k; ++i) {
       if (!(full[i] != 0 && full[(i + k - 1) % k] == 0)) continue;  // facet i starts a full run
       std::size_t j = i;
       while (full[(j + 1) % k] != 0) j = (j + 1) % k;
-      const std::uint32_t a = face_of_facet[facets[i].index()];
-      const std::uint32_t b = face_of_facet[facets[(j + 1) % k].index()];
-      LINESURF_ASSERT(a != kNoIndex && b != kNoIndex && a != b);
+      const SurfaceFaceId a = face_of_facet[facets[i].index()];
+      const SurfaceFaceId b = face_of_facet[facets[(j + 1) % k].index()];
+      LINESURF_ASSERT(a.IsValid() && b.IsValid() && a != b);
       s.partner[s.EdgeSlot(a, edge)] = b;
       s.partner[s.EdgeSlot(b, edge)] = a;
       if (surface_here > 2) crowded.push_back({edge, a, b});
@@ -241,17 +235,17 @@ AssembledSurface AssembleSurface(const SurfaceCycles& s,
                                  std::span<const EdgePair> crowded,
                                  bool triangulate) {
   AssembledSurface out;
-  const std::vector<std::uint32_t> corner_out =
+  const std::vector<MeshVertexId> corner_out =
       AssignCornerVertices(points.size(), s, out.vertex_source);
   const std::size_t num_umbrellas = out.vertex_source.size();
   std::vector<Vec3> midpoints;
-  const std::vector<std::uint32_t> inserted =
+  const std::vector<MeshVertexId> inserted =
       SeparateSharedEdges(s, points, crowded, corner_out, out.vertex_source, midpoints);
 
   std::size_t used_vertices = 0;
   {
     std::vector<std::uint8_t> used(points.size(), 0);
-    for (std::size_t i = 0; i < num_umbrellas; ++i) used[out.vertex_source[i]] = 1;
+    for (std::size_t i = 0; i < num_umbrellas; ++i) used[out.vertex_source[i].index()] = 1;
     for (const std::uint8_t u : used) used_vertices += u;
   }
   out.split_vertices = num_umbrellas - used_vertices + midpoints.size();
@@ -259,14 +253,14 @@ AssembledSurface AssembleSurface(const SurfaceCycles& s,
   PolygonMesh& mesh = out.mesh;
   mesh.vertices.reserve(out.vertex_source.size());
   for (std::size_t i = 0; i < num_umbrellas; ++i)
-    mesh.vertices.push_back(points[out.vertex_source[i]]);
+    mesh.vertices.push_back(points[out.vertex_source[i].index()]);
   mesh.vertices.insert(mesh.vertices.end(), midpoints.begin(), midpoints.end());
   std::vector<std::uint32_t> face;
   for (std::size_t f = 0; f < s.NumFaces(); ++f) {
     face.clear();
     for (std::uint32_t k = s.offsets[f]; k < s.offsets[f + 1]; ++k) {
-      face.push_back(corner_out[k]);
-      if (inserted[k] != kNoIndex) face.push_back(inserted[k]);
+      face.push_back(corner_out[k].value());
+      if (inserted[k].IsValid()) face.push_back(inserted[k].value());
     }
     AddOutputFace(face, static_cast<std::uint32_t>(f), triangulate, out);
   }

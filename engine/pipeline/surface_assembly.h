@@ -7,26 +7,34 @@
 
 #include "engine/core/cell_complex.h"
 #include "engine/core/polygon_mesh.h"
+#include "engine/core/strong_id.h"
 
 #include <cstdint>
-#include <limits>
 #include <span>
 #include <vector>
 
 namespace linesurf::pipeline {
 
-inline constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::max();
+/// A face of SurfaceCycles (in cycle order).
+struct SurfaceFaceTag {};
+using SurfaceFaceId = StrongId<SurfaceFaceTag>;
+/// An edge of the surface, shared by every face on it (ids chosen by the front end).
+struct SurfaceEdgeTag {};
+using SurfaceEdgeId = StrongId<SurfaceEdgeTag>;
+/// A candidate vertex: an index into the points given to AssembleSurface.
+struct CandidateVertexTag {};
+using CandidateVertexId = StrongId<CandidateVertexTag>;
 
 /// The surface faces as cycles oriented from full to empty (counter-clockwise seen from the
 /// empty side). Corner k of a face has a candidate vertex (an index into the points given to
 /// AssembleSurface) and the edge from it to the next corner (an id shared by every face on that
 /// edge); partner[k] is the face joined to it across that edge (the other face bounding the
-/// same run of full cells around the edge), filled by the front end.
+/// same run of full cells around the edge; invalid until the front end fills it).
 struct SurfaceCycles {
   std::vector<std::uint32_t> offsets{0};  ///< corners of face s: [offsets[s], offsets[s+1])
   std::vector<std::uint32_t> corner_vertex;
-  std::vector<std::uint32_t> corner_edge;
-  std::vector<std::uint32_t> partner;
+  std::vector<SurfaceEdgeId> corner_edge;
+  std::vector<SurfaceFaceId> partner;
 
   [[nodiscard]] std::size_t NumFaces() const { return offsets.size() - 1; }
   /// Appends a face from a cycle stored counter-clockwise seen from the side its normal points
@@ -35,30 +43,30 @@ struct SurfaceCycles {
                 std::span<const std::uint32_t> edges,
                 bool reverse);
   /// Corner index of edge `edge` in face `face` (the corner the edge leaves from).
-  [[nodiscard]] std::uint32_t EdgeSlot(std::uint32_t face, std::uint32_t edge) const;
+  [[nodiscard]] std::uint32_t EdgeSlot(SurfaceFaceId face, SurfaceEdgeId edge) const;
   /// The corner after corner k of face `face`.
-  [[nodiscard]] std::uint32_t NextCorner(std::uint32_t face, std::uint32_t k) const {
-    return k + 1 < offsets[face + 1] ? k + 1 : offsets[face];
+  [[nodiscard]] std::uint32_t NextCorner(SurfaceFaceId face, std::uint32_t k) const {
+    return k + 1 < offsets[face.index() + 1] ? k + 1 : offsets[face.index()];
   }
 };
 
 /// Two surface faces joined across an edge that holds more than two surface faces.
 struct EdgePair {
-  std::uint32_t edge;
-  std::uint32_t a;
-  std::uint32_t b;
+  SurfaceEdgeId edge;
+  SurfaceFaceId a;
+  SurfaceFaceId b;
 };
 
 /// Pairs the surface facets around the edges of one complex by the runs of full cells in each
 /// edge's star (an open chain on the box closes outside, whose label is `outside_full`).
-/// `face_of_facet` maps a facet to its surface face (kNoIndex when not on the surface); the
+/// `face_of_facet` maps a facet to its surface face (invalid when not on the surface); the
 /// face's corner edges are `edge_offset + EdgeId::index()`. Edges with a facet flagged in
 /// `skip_facet` (empty: none) are left to the caller. Appends the pairs of edges with more than
 /// two surface facets to `crowded`, in edge order; returns the number of such edges.
 std::size_t PairAroundComplexEdges(const CellComplex& cx,
                                    std::span<const std::uint8_t> labels,
                                    bool outside_full,
-                                   std::span<const std::uint32_t> face_of_facet,
+                                   std::span<const SurfaceFaceId> face_of_facet,
                                    std::uint32_t edge_offset,
                                    std::span<const std::uint8_t> skip_facet,
                                    SurfaceCycles& cycles,
@@ -68,8 +76,8 @@ struct AssembledSurface {
   PolygonMesh mesh;
   /// The surface face (index into the cycles) of every output face.
   std::vector<std::uint32_t> face_cycle;
-  /// The candidate vertex of every output vertex (kNoIndex for midpoints and centroids).
-  std::vector<std::uint32_t> vertex_source;
+  /// The candidate vertex of every output vertex (invalid for midpoints and centroids).
+  std::vector<CandidateVertexId> vertex_source;
   /// Output vertices beyond one per candidate vertex used.
   std::size_t split_vertices = 0;
 };

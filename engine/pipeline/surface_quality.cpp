@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -29,13 +28,13 @@ constexpr const char* kSurfaceQualityStage = "surface_quality";
 constexpr std::size_t kSegmentGrain = 64;
 /// Planes per parallel task of the off-surface search.
 constexpr std::size_t kPlaneGrain = 16;
-/// A vertex no kept face uses.
-constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
-/// A removed component's new id.
-constexpr std::uint32_t kNoComponent = std::numeric_limits<std::uint32_t>::max();
 /// Parts of one line: every endpoint within this fraction of the median segment length of the
 /// other's line (as eps auto counts them).
 constexpr double kCollinearPartsOverMedianLength = 1e-5;
+
+/// A component of the mesh: faces sharing a vertex (FaceComponents).
+struct ComponentTag {};
+using ComponentId = StrongId<ComponentTag>;
 
 /// The mesh's faces fanned into a triangle tree, with the component of every face.
 struct MeshIndex {
@@ -65,15 +64,13 @@ std::vector<std::uint32_t> FaceComponents(const PolygonMesh& mesh, std::size_t& 
     for (std::size_t k = 1; k < face.size(); ++k) sets.Union(face[0], face[k]);
   }
   // Number components by their first face.
-  std::vector<std::uint32_t> id_of_root(nv, std::numeric_limits<std::uint32_t>::max());
+  std::vector<ComponentId> id_of_root(nv);
   std::vector<std::uint32_t> out(mesh.NumFaces());
   count = 0;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     const std::size_t root = sets.Find(mesh.Face(f)[0]);
-    if (id_of_root[root] == std::numeric_limits<std::uint32_t>::max()) {
-      id_of_root[root] = static_cast<std::uint32_t>(count++);
-    }
-    out[f] = id_of_root[root];
+    if (!id_of_root[root].IsValid()) id_of_root[root] = ComponentId(count++);
+    out[f] = id_of_root[root].value();
   }
   return out;
 }
@@ -387,10 +384,10 @@ SurfaceQuality MeasureWithout(const PolygonMesh& kept,
                               const RunContext& ctx) {
   const MeshIndex kept_index = IndexMesh(kept);
   // Components keep their faces: the old id of a kept face's component gives its new one.
-  std::vector<std::uint32_t> new_component(index.num_components, kNoComponent);
+  std::vector<ComponentId> new_component(index.num_components);  // invalid: removed
   for (std::size_t f = 0, k = 0; f < index.face_component.size(); ++f) {
     const std::uint32_t c = index.face_component[f];
-    if (!removed[c]) new_component[c] = kept_index.face_component[k++];
+    if (!removed[c]) new_component[c] = ComponentId(kept_index.face_component[k++]);
   }
   const auto touches_removed = [&](std::size_t i) {
     return std::any_of(per_segment[i].components.begin(),
@@ -401,7 +398,7 @@ SurfaceQuality MeasureWithout(const PolygonMesh& kept,
   for (std::size_t i = 0; i < per_segment.size(); ++i) {
     again[i] = touches_removed(i) ? 1 : 0;
     if (again[i] != 0) continue;
-    for (auto& [c, length] : per_segment[i].near_by_component) c = new_component[c];
+    for (auto& [c, length] : per_segment[i].near_by_component) c = new_component[c].value();
   }
   MeasureSegments(
       scene,
@@ -444,21 +441,22 @@ FragmentRemoval RemoveFragments(const PolygonMesh& mesh,
     return out;
   }
   // The kept faces and the vertices they use, each in their order.
-  std::vector<std::uint32_t> new_index(mesh.vertices.size(), kNoVertex);
+  std::vector<std::uint8_t> used(mesh.vertices.size(), 0);
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     if (removed[face_component[f]]) continue;
-    for (std::uint32_t v : mesh.Face(f)) new_index[v] = 0;
+    for (std::uint32_t v : mesh.Face(f)) used[v] = 1;
   }
+  std::vector<MeshVertexId> new_index(mesh.vertices.size());  // invalid: no kept face uses it
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    if (new_index[v] == kNoVertex) continue;
-    new_index[v] = static_cast<std::uint32_t>(out.mesh.vertices.size());
+    if (used[v] == 0) continue;
+    new_index[v] = MeshVertexId(out.mesh.vertices.size());
     out.mesh.vertices.push_back(mesh.vertices[v]);
   }
   std::vector<std::uint32_t> face;
   for (std::size_t f = 0; f < mesh.NumFaces(); ++f) {
     if (removed[face_component[f]]) continue;
     face.clear();
-    for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v]);
+    for (std::uint32_t v : mesh.Face(f)) face.push_back(new_index[v].value());
     out.mesh.AddFace(face);
   }
   out.quality = MeasureWithout(out.mesh,

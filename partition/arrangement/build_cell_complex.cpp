@@ -61,7 +61,8 @@ class Builder {
 
   // Facets.
   std::vector<std::vector<std::uint32_t>> facet_cycle_;
-  std::vector<std::uint32_t> facet_plane_, facet_pos_, facet_neg_;
+  std::vector<std::uint32_t> facet_plane_;
+  std::vector<CellId> facet_pos_, facet_neg_;  ///< invalid negative cell: outside the box
   std::vector<FacetSplit> facet_split_;
 
   // Cells.
@@ -70,8 +71,6 @@ class Builder {
 
   std::unordered_map<std::uint64_t, std::uint32_t> edge_memo_;  // lookup only, never iterated
 };
-
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
 std::uint32_t Builder::AddVertex(const std::array<std::uint32_t, 3>& def,
                                  std::vector<std::uint32_t> on) {
@@ -105,8 +104,8 @@ void Builder::InitBox(const Box3& box) {
       {0, 2, 6, 4}, {0, 4, 5, 1}, {0, 1, 3, 2}, {1, 5, 7, 3}, {2, 3, 7, 6}, {4, 6, 7, 5}};
   for (std::uint32_t f = 0; f < 6; ++f) {
     facet_plane_.push_back(f);
-    facet_pos_.push_back(0);
-    facet_neg_.push_back(kNone);
+    facet_pos_.emplace_back(0u);
+    facet_neg_.push_back(CellId::Invalid());
     facet_split_.push_back({});
   }
   cell_facets_ = {{0, 1, 2, 3, 4, 5}};
@@ -211,7 +210,7 @@ void Builder::SplitCell(std::uint32_t c) {
     if (std::find(ring.begin(), ring.end(), e) == ring.end()) ring.push_back(e);
   };
   for (const std::uint32_t f : cell_facets_[c]) {
-    const bool c_is_positive = facet_pos_[f] == c;
+    const bool c_is_positive = facet_pos_[f] == CellId(c);
     if (facet_split_[f].stamp == stamp_) {
       // Mixed facet, already split (by this cell or its neighbour). The cut edge of the positive
       // piece runs t2 -> t1 in stored order; seen outward from c it is reversed when c is the
@@ -281,12 +280,12 @@ void Builder::SplitCell(std::uint32_t c) {
   const auto nf = static_cast<std::uint32_t>(facet_cycle_.size());
   facet_cycle_.push_back(std::move(cycle));
   facet_plane_.push_back(pid_);
-  facet_pos_.push_back(c);
-  facet_neg_.push_back(cm);
+  facet_pos_.emplace_back(c);
+  facet_neg_.emplace_back(cm);
   facet_split_.push_back({});
   for (const std::uint32_t f : minus_facets) {
-    if (facet_pos_[f] == c) facet_pos_[f] = cm;
-    if (facet_neg_[f] == c) facet_neg_[f] = cm;
+    if (facet_pos_[f] == CellId(c)) facet_pos_[f] = CellId(cm);
+    if (facet_neg_[f] == CellId(c)) facet_neg_[f] = CellId(cm);
   }
   plus_facets.push_back(nf);
   minus_facets.push_back(nf);
@@ -406,8 +405,8 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
   for (std::size_t f = 0; f < nfac; ++f) {
     const auto& cyc = facet_cycle_[f];
     cx.facet_plane.push_back(ComplexPlaneId(facet_plane_[f]));
-    cx.facet_positive_cell.push_back(CellId(facet_pos_[f]));
-    cx.facet_negative_cell.push_back(facet_neg_[f] == kNone ? CellId() : CellId(facet_neg_[f]));
+    cx.facet_positive_cell.push_back(facet_pos_[f]);
+    cx.facet_negative_cell.push_back(facet_neg_[f]);
     std::vector<VertexId> ids;
     ids.reserve(cyc.size());
     for (std::size_t i = 0; i < cyc.size(); ++i) {
@@ -452,31 +451,31 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     for (const FacetId f : incident[EdgeId(e)]) fs.push_back(f.value());
     ordered_facets.clear();
     ordered_cells.clear();
-    std::uint32_t start = kNone;
+    FacetId start;
     bool boundary = false;
     for (const std::uint32_t f : fs) {
       if (facet_plane_[f] < kNumBoxPlanes) {
         boundary = true;
-        start = std::min(start, f);
+        start = std::min(start, FacetId(f));  // the invalid id is above every facet
       }
     }
-    if (!boundary) start = *std::min_element(fs.begin(), fs.end());
-    std::uint32_t f = start;
-    std::uint32_t cell = facet_pos_[f];
+    if (!boundary) start = FacetId(*std::min_element(fs.begin(), fs.end()));
+    std::uint32_t f = start.value();
+    CellId cell = facet_pos_[f];
     for (std::size_t step = 0; step <= fs.size(); ++step) {
       ordered_facets.emplace_back(f);
       if (boundary && step > 0 && facet_plane_[f] < kNumBoxPlanes) break;
       ordered_cells.emplace_back(cell);
-      std::uint32_t next = kNone;
+      FacetId next;
       for (const std::uint32_t g : fs) {
         if (g != f && (facet_pos_[g] == cell || facet_neg_[g] == cell)) {
-          next = g;
+          next = FacetId(g);
           break;
         }
       }
-      LINESURF_ASSERT(next != kNone);
+      LINESURF_ASSERT(next.IsValid());
       if (!boundary && next == start) break;
-      f = next;
+      f = next.value();
       cell = facet_pos_[f] == cell ? facet_neg_[f] : facet_pos_[f];
     }
     LINESURF_ASSERT(ordered_facets.size() == fs.size());

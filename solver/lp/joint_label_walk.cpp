@@ -58,7 +58,7 @@ double JointLabelWalk::Coefficient(TermRef t, CellId c) const {
 std::uint32_t JointLabelWalk::BestFlips(std::span<const std::uint32_t> slots,
                                         const std::vector<std::uint8_t>& labels) {
   LINESURF_ASSERT(slots.size() <= kMaxJointCells);
-  if (walk_ == std::numeric_limits<std::uint32_t>::max()) {
+  if (walk_ == kLastWalk) {
     std::fill(seen_in_.begin(), seen_in_.end(), 0);
     walk_ = 0;
   }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -56,7 +57,9 @@ class JointLabelWalk {
   std::span<const CellId> free_;
   const TermIncidence& incidence_;
   // Per term of the energy (pairs, structural groups, parity groups): the walk that last listed
-  // it, and its index in that walk.
+  // it, and its index in that walk. Walks are numbered from 1 (0: never listed); after
+  // kLastWalk the stamps are cleared and numbering starts again.
+  static constexpr std::uint32_t kLastWalk = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> seen_in_;
   std::vector<std::uint32_t> index_;
   std::uint32_t walk_ = 0;
