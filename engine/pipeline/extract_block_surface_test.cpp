@@ -2,7 +2,7 @@
 
 #include "engine/core/rng.h"
 #include "tests/support/one_complex_surface.h"
-#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_topology.h"
 #include "partition/arrangement/build_cell_complex.h"
 #include "partition/arrangement/cell_geometry.h"
 #include "partition/arrangement/cell_locator.h"
@@ -134,9 +134,9 @@ void ExpectValidSurface(const PolygonMesh& mesh, double volume) {
     EXPECT_EQ(mesh.NumFaces(), 0u);
     return;
   }
-  const IndexTopology t = CheckIndexTopology(mesh);
-  EXPECT_TRUE(t.closed) << t.boundary_or_repeated_edges << " bad edges";
-  EXPECT_TRUE(t.manifold) << t.non_manifold_vertices << " non-manifold vertices";
+  const MeshTopology t = ComputeMeshTopology(mesh);
+  EXPECT_TRUE(t.paired) << t.num_unpaired_half_edges << " bad edges";
+  EXPECT_TRUE(t.IsManifold()) << t.num_non_manifold_vertices << " non-manifold vertices";
   const Expected<MeshValidity> m = CheckMeshValidity(mesh);
   ASSERT_TRUE(m) << m.error().ToString();
   EXPECT_TRUE(m->closed);

@@ -143,10 +143,12 @@ ResultJudgement JudgeResult(const ResultFacts& f) {
     j.error = Error{ErrorCode::kDegenerate, kJudgeResultStage, os.str()};
     return j;
   }
-  if (!f.topology.closed || !f.topology.manifold) {
-    os << "the surface is not " << (f.topology.closed ? "2-manifold" : "closed") << " ("
-       << f.topology.boundary_or_repeated_edges << " boundary or repeated edges, "
-       << f.topology.non_manifold_vertices << " non-manifold vertices)";
+  if (!f.topology.IsManifold()) {
+    // Fans are named on a closed surface only: an open one reports its edges.
+    const bool closed = f.topology.paired;
+    os << "the surface is not " << (closed ? "2-manifold" : "closed") << " ("
+       << f.topology.num_unpaired_half_edges << " boundary or repeated edges, "
+       << (closed ? f.topology.num_non_manifold_vertices : 0) << " non-manifold vertices)";
     j.warnings.push_back(os.str());
     return j;
   }

@@ -7,7 +7,7 @@
 #include "linesurf/error.h"
 
 #include "engine/pipeline/decide_scene_mode.h"
-#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_topology.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -36,7 +36,7 @@ struct ResultFacts {
   double scene_diagonal = 0.0;  ///< of the box, local units
   std::size_t samples = 0;
   std::size_t grazing_samples = 0;  ///< samples skipped, viewpoint in the segment's plane
-  IndexTopology topology;
+  MeshTopology topology;
   std::size_t mesh_faces = 0;
   /// Blocks engine: surface area on seams that carry no plane (open_seams.h), and the mesh's.
   double open_seam_area = 0.0;

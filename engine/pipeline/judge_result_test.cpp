@@ -26,8 +26,7 @@ ResultFacts GoodExterior() {
   f.scene_diagonal = 70.0;
   f.detection_epsilon = 0.02;
   f.samples = 1000;
-  f.topology.closed = true;
-  f.topology.manifold = true;
+  f.topology.paired = true;
   f.topology.signed_volume = 600.0;
   f.mesh_faces = 19;
   return f;

@@ -1,9 +1,9 @@
 #include "engine/pipeline/mesh_validity.h"
 
 #include "engine/core/coordinate_bound.h"
-#include "engine/core/disjoint_sets.h"
 #include "engine/core/exception.h"
 #include "engine/core/vector_area.h"
+#include "engine/pipeline/mesh_topology.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <array>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -178,101 +177,28 @@ std::vector<std::vector<std::size_t>> FacesWithArea(
   return with_area;
 }
 
-/// Area and signed volume over a fan triangulation: a planar face's area is the length of the
-/// sum of its fan's vector areas, convex or not (merged faces are not), and the volume is exact
-/// for any closed polygon mesh because the fan's inner edges cancel.
-void AddAreaAndVolume(const PolygonMesh& mesh,
-                      const std::vector<std::vector<std::size_t>>& faces,
-                      MeshValidity& topo) {
+/// Area over a fan triangulation: a planar face's area is the length of the sum of its fan's
+/// vector areas, convex or not (merged faces are not).
+double Area(const PolygonMesh& mesh, const std::vector<std::vector<std::size_t>>& faces) {
+  double area = 0.0;
   for (const auto& face : faces) {
-    const Vec3& a = mesh.vertices[face[0]];
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
-      topo.signed_volume += a.dot(mesh.vertices[face[k]].cross(mesh.vertices[face[k + 1]])) / 6.0;
-    }
-    topo.area += 0.5 * TwiceVectorArea(face.size(), [&](std::size_t k) -> const Vec3& {
-                         return mesh.vertices[face[k]];
-                       }).norm();
+    area += 0.5 * TwiceVectorArea(face.size(), [&](std::size_t k) -> const Vec3& {
+              return mesh.vertices[face[k]];
+            }).norm();
   }
+  return area;
 }
 
-/// Counts boundary and non-manifold edges and the connected components in `topo`; returns
-/// whether every edge used twice is used once in each direction.
-bool CheckEdges(const std::vector<std::vector<std::size_t>>& faces, MeshValidity& topo) {
-  // Directed edges (lo, hi, forward, face) sorted: groups are undirected edges.
-  struct HalfEdge {
-    std::size_t lo, hi;
-    bool forward;
-    std::size_t face;
-    auto Key() const { return std::tie(lo, hi, forward, face); }
-  };
-  std::vector<HalfEdge> edges;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const auto& face = faces[f];
-    for (std::size_t k = 0; k < face.size(); ++k) {
-      const std::size_t a = face[k];
-      const std::size_t b = face[(k + 1) % face.size()];
-      edges.push_back({std::min(a, b), std::max(a, b), a < b, f});
-    }
-  }
-  std::sort(edges.begin(), edges.end(),
-            [](const HalfEdge& x, const HalfEdge& y) { return x.Key() < y.Key(); });
-  DisjointSets face_sets(faces.size());
-  bool consistent = true;
-  std::size_t group = 0;  // first half-edge of the current undirected edge
-  for (std::size_t i = 1; i <= edges.size() && !edges.empty(); ++i) {
-    if (i < edges.size() && edges[i].lo == edges[group].lo && edges[i].hi == edges[group].hi) {
-      face_sets.Union(edges[group].face, edges[i].face);
-      continue;
-    }
-    const std::size_t uses = i - group;
-    if (uses == 1) ++topo.num_boundary_edges;
-    if (uses > 2) ++topo.num_non_manifold_edges;
-    if (uses == 2 && edges[group].forward == edges[group + 1].forward) consistent = false;
-    group = i;
-  }
-  topo.num_components = face_sets.CountRoots(faces.size());
-  return consistent;
-}
-
-/// Number of vertices whose corners form more than one fan: corners around a vertex are linked
-/// when they share an edge to a neighbour x.
-std::size_t CountNonManifoldVertices(const std::vector<std::vector<std::size_t>>& faces) {
-  struct Corner {
-    std::size_t vertex, neighbour, corner;
-  };
-  std::vector<Corner> links;
-  std::size_t num_corners = 0;
+/// The edge and fan topology of `faces` (mesh_topology.h).
+pipeline::MeshTopology FaceTopology(const PolygonMesh& mesh,
+                                    const std::vector<std::vector<std::size_t>>& faces) {
+  std::vector<std::uint32_t> offsets{0};
+  std::vector<std::uint32_t> indices;
   for (const auto& face : faces) {
-    for (std::size_t k = 0; k < face.size(); ++k, ++num_corners) {
-      const std::size_t prev = face[(k + face.size() - 1) % face.size()];
-      const std::size_t next = face[(k + 1) % face.size()];
-      links.push_back({face[k], prev, num_corners});
-      links.push_back({face[k], next, num_corners});
-    }
+    for (const std::size_t v : face) indices.push_back(static_cast<std::uint32_t>(v));
+    offsets.push_back(static_cast<std::uint32_t>(indices.size()));
   }
-  std::sort(links.begin(), links.end(), [](const Corner& x, const Corner& y) {
-    return std::tie(x.vertex, x.neighbour, x.corner) < std::tie(y.vertex, y.neighbour, y.corner);
-  });
-  DisjointSets corner_sets(num_corners);
-  for (std::size_t i = 0; i + 1 < links.size(); ++i) {
-    if (links[i].vertex == links[i + 1].vertex && links[i].neighbour == links[i + 1].neighbour) {
-      corner_sets.Union(links[i].corner, links[i + 1].corner);
-    }
-  }
-  std::size_t non_manifold = 0;
-  for (std::size_t i = 0; i < links.size();) {
-    std::size_t j = i;
-    std::vector<std::size_t> roots;
-    while (j < links.size() && links[j].vertex == links[i].vertex) {
-      roots.push_back(corner_sets.Find(links[j].corner));
-      ++j;
-    }
-    std::sort(roots.begin(), roots.end());
-    const auto fans = std::unique(roots.begin(), roots.end()) - roots.begin();
-    if (fans > 1) ++non_manifold;
-    i = j;
-  }
-  return non_manifold;
+  return pipeline::ComputeMeshTopology(mesh.vertices, offsets, indices);
 }
 
 MeshValidity Check(const PolygonMesh& mesh) {
@@ -283,13 +209,17 @@ MeshValidity Check(const PolygonMesh& mesh) {
   topo.num_coincident_vertices = CountCoincidentVertices(mesh);
   const std::vector<std::vector<std::size_t>> faces = NonDegenerateFaces(mesh, topo);
   const std::vector<std::vector<std::size_t>> with_area = FacesWithArea(mesh, faces, topo);
-  AddAreaAndVolume(mesh, faces, topo);
-  const bool consistent = CheckEdges(faces, topo);
-  topo.num_non_manifold_vertices = CountNonManifoldVertices(faces);
+  const pipeline::MeshTopology edges = FaceTopology(mesh, faces);
+  topo.signed_volume = edges.signed_volume;
+  topo.area = Area(mesh, faces);
+  topo.num_boundary_edges = edges.num_boundary_edges;
+  topo.num_non_manifold_edges = edges.num_non_manifold_edges;
+  topo.num_components = edges.num_components;
+  topo.num_non_manifold_vertices = edges.num_non_manifold_vertices;
 
   topo.closed = !faces.empty() && topo.num_boundary_edges == 0 && topo.num_non_manifold_edges == 0;
   topo.two_manifold = topo.num_non_manifold_edges == 0 && topo.num_non_manifold_vertices == 0;
-  topo.oriented = consistent && topo.num_non_manifold_edges == 0;
+  topo.oriented = edges.consistent && topo.num_non_manifold_edges == 0;
   topo.outward = topo.closed && topo.oriented && topo.signed_volume > 0.0;
   const TrianglePairs pairs = IntersectingPairs(mesh, with_area);
   topo.num_intersecting_triangle_pairs = pairs.intersecting;

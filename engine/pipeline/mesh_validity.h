@@ -1,7 +1,9 @@
 #pragma once
 /// @file mesh_validity.h
 /// @brief The one checker of meshes as solid boundaries (MeshValidity, linesurf/result.h): run
-/// on every reconstruction by the facade, by `linesurf evaluate` and by the tests.
+/// on every reconstruction by the facade, by `linesurf evaluate` and by the tests. Its edge and
+/// fan counts are those of engine/pipeline/mesh_topology.h over the non-degenerate faces; the
+/// geometric checks (zero-area and non-planar faces, self-intersection) are its own.
 
 #include "engine/core/polygon_mesh.h"
 #include "linesurf/error.h"

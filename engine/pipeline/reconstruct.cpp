@@ -13,7 +13,7 @@
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_block_surface.h"
 #include "engine/pipeline/judge_result.h"
-#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_topology.h"
 #include "engine/pipeline/mesh_validity.h"
 #include "engine/pipeline/open_seams.h"
 #include "engine/pipeline/pinch_repair.h"
@@ -285,7 +285,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     facts.open_seam_faces = open.faces;
     facts.mesh_area = open.total_area;
     result.mesh = std::move(surface.mesh);
-    IndexTopology topology = CheckIndexTopology(result.mesh);
+    MeshTopology topology = ComputeMeshTopology(result.mesh);
     timer.Stop();
 
     facts.full_cells =
@@ -314,7 +314,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
           RemoveFloatingFragments(result.mesh, scene, epsilon, options.quality, stage_ctx));
       if (kept.removed_components > 0) {
         result.mesh = std::move(kept.mesh);
-        topology = CheckIndexTopology(result.mesh);
+        topology = ComputeMeshTopology(result.mesh);
       }
       stats.fragments = MakeFragmentStats(kept);
       measured = std::move(kept.quality);

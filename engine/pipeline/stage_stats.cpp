@@ -107,13 +107,13 @@ LabelingStats MakeLabelingStats(const solver::LabelingResult& labeling) {
 }
 
 SurfaceStats MakeSurfaceStats(const PolygonMesh& mesh,
-                              const IndexTopology& topology,
+                              const MeshTopology& topology,
                               const ExtractStats& extraction,
                               const PinchRepairStats& repair) {
   return {.mesh_vertices = mesh.vertices.size(),
           .mesh_faces = mesh.NumFaces(),
-          .mesh_closed = topology.closed,
-          .mesh_manifold = topology.manifold,
+          .mesh_closed = topology.paired,
+          .mesh_manifold = topology.IsManifold(),
           .mesh_volume = topology.signed_volume,
           .split_vertices = extraction.split_vertices,
           .pinch_cells_relabelled = repair.flipped_cells,

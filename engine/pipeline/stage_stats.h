@@ -13,7 +13,7 @@
 #include "engine/pipeline/detect_scene_planes.h"
 #include "engine/pipeline/extract_block_surface.h"
 #include "engine/pipeline/judge_result.h"
-#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_topology.h"
 #include "engine/pipeline/pinch_repair.h"
 #include "engine/pipeline/sanitize_scene.h"
 #include "engine/pipeline/surface_quality.h"
@@ -50,10 +50,10 @@ namespace linesurf::pipeline {
 /// The LP's size, the backend, its status and objectives, and the cells labelled full.
 [[nodiscard]] LabelingStats MakeLabelingStats(const solver::LabelingResult& labeling);
 
-/// The surface returned (`mesh`, its index topology), the extraction's split vertices (of the
+/// The surface returned (`mesh`, its topology by vertex index), the extraction's split vertices (of the
 /// labels' surface, before fragments are removed) and what the pinch repair changed.
 [[nodiscard]] SurfaceStats MakeSurfaceStats(const PolygonMesh& mesh,
-                                            const IndexTopology& topology,
+                                            const MeshTopology& topology,
                                             const ExtractStats& extraction,
                                             const PinchRepairStats& repair);
 

@@ -126,9 +126,9 @@ TEST(StageStats, SurfaceIsTheMeshReturnedWithTheExtractionsSplitVertices) {
   mesh.vertices = {Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY()};
   mesh.face_offsets = {0, 3};
   mesh.face_indices = {0, 1, 2};
-  IndexTopology topology;
-  topology.closed = true;
-  topology.manifold = false;
+  MeshTopology topology;
+  topology.paired = true;
+  topology.num_non_manifold_vertices = 1;
   topology.signed_volume = -1.5;
   ExtractStats extraction;
   extraction.split_vertices = 4;

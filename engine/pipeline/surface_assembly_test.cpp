@@ -2,7 +2,7 @@
 
 #include "engine/core/rng.h"
 #include "tests/support/grid_complex.h"
-#include "engine/pipeline/mesh_index_topology.h"
+#include "engine/pipeline/mesh_topology.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -32,9 +32,9 @@ ExtractResult Extract(const GridComplexForTest& g,
 }
 
 void ExpectClosedManifold(const PolygonMesh& mesh, double volume) {
-  const IndexTopology t = CheckIndexTopology(mesh);
-  EXPECT_TRUE(t.closed) << t.boundary_or_repeated_edges << " bad edges";
-  EXPECT_TRUE(t.manifold) << t.non_manifold_vertices << " non-manifold vertices";
+  const MeshTopology t = ComputeMeshTopology(mesh);
+  EXPECT_TRUE(t.paired) << t.num_unpaired_half_edges << " bad edges";
+  EXPECT_TRUE(t.IsManifold()) << t.num_non_manifold_vertices << " non-manifold vertices";
   EXPECT_NEAR(t.signed_volume, volume, 1e-9);
 }
 
