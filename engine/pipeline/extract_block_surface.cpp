@@ -471,6 +471,211 @@ double SceneMagnitude(const BlockComplexes& cx) {
   return 1.0 + std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
 }
 
+
+/// Where each block's pieces start: its seams among those listed by (lower block, axis) and its
+/// edges, numbered consecutively over the blocks.
+struct BlockNumbering {
+  std::vector<std::uint32_t> seam_begin;
+  std::vector<std::uint32_t> edge_offset;
+};
+
+BlockNumbering NumberBlocks(const BlockComplexes& cx) {
+  const std::size_t num_blocks = cx.blocks.size();
+  BlockNumbering n{std::vector<std::uint32_t>(num_blocks + 1, 0),
+                   std::vector<std::uint32_t>(num_blocks + 1, 0)};
+  for (const SeamFace& seam : cx.seams) ++n.seam_begin[seam.lower_block + 1];
+  for (std::size_t b = 0; b < num_blocks; ++b) n.seam_begin[b + 1] += n.seam_begin[b];
+  for (std::size_t b = 0; b < num_blocks; ++b) {
+    n.edge_offset[b + 1] =
+        n.edge_offset[b] + static_cast<std::uint32_t>(cx.blocks[b].complex.NumEdges());
+  }
+  return n;
+}
+
+/// The surface faces of every block, blocks in parallel.
+std::vector<BlockPart> CollectParts(const BlockComplexes& cx,
+                                    const Collector& collector,
+                                    const BlockNumbering& numbering,
+                                    const RunContext& ctx) {
+  const std::vector<std::uint32_t>& seam_begin = numbering.seam_begin;
+  std::vector<BlockPart> parts(cx.blocks.size());
+  RunInArena(ctx, [&] {
+    tbb::parallel_for(std::size_t{0}, cx.blocks.size(), [&](std::size_t b) {
+      if (ctx.ShouldStop()) return;
+      const std::span<const SeamFace> lower(cx.seams.data() + seam_begin[b],
+                                            seam_begin[b + 1] - seam_begin[b]);
+      parts[b] = collector.Collect(b, numbering.edge_offset[b], lower, seam_begin[b]);
+    });
+  });
+  ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
+  return parts;
+}
+
+/// All faces and corners of the parts in output order.
+struct OrderedFaces {
+  std::vector<const RawCorner*> corners;
+  std::vector<const RawFace*> faces;
+  std::vector<std::uint32_t> face_begin;  ///< first corner of each face in `corners`, then the end
+  std::vector<std::uint32_t> block_first_face;
+};
+
+OrderedFaces OrderFaces(const std::vector<BlockPart>& parts, StitchStats& stitch) {
+  OrderedFaces o;
+  o.block_first_face.assign(parts.size() + 1, 0);
+  for (std::size_t b = 0; b < parts.size(); ++b) {
+    const auto base = static_cast<std::uint32_t>(o.corners.size());
+    for (const RawCorner& c : parts[b].corners) o.corners.push_back(&c);
+    for (const RawFace& f : parts[b].faces) {
+      o.faces.push_back(&f);
+      o.face_begin.push_back(base + f.begin);
+      stitch.seam_surface_facets += f.ref.seam ? 1 : 0;
+    }
+    o.block_first_face[b + 1] = static_cast<std::uint32_t>(o.faces.size());
+  }
+  o.face_begin.push_back(static_cast<std::uint32_t>(o.corners.size()));
+  return o;
+}
+
+/// Every face with the vertices on block faces that lie inside its edges inserted, faces in
+/// parallel.
+std::vector<SubdividedFace> SubdivideFaces(const BlockComplexes& cx,
+                                           const MergedVertices& mv,
+                                           const OrderedFaces& o,
+                                           double distance,
+                                           const RunContext& ctx) {
+  // Vertices on block faces, for the search of vertices inside edges.
+  const Vec3 extent = cx.grid.box().Extent();
+  const double cell = std::min(cx.grid.block_size(), extent.maxCoeff()) / kEdgeSearchCellsPerBlock;
+  std::vector<std::pair<Cell3, std::uint32_t>> entries;
+  for (std::uint32_t v = 0; v < mv.keys.size(); ++v) {
+    if (mv.on_face[v] != 0) entries.push_back({CellOf(mv.points[v], cell), v});
+  }
+  const PointGrid on_faces(cell, std::move(entries));
+  std::vector<SubdividedFace> subdivided(o.faces.size());
+  RunInArena(ctx, [&] {
+    tbb::parallel_for(std::size_t{0}, o.faces.size(), [&](std::size_t f) {
+      if (ctx.ShouldStop()) return;
+      subdivided[f] =
+          Subdivide(cx, mv, on_faces, distance, o.corners, o.face_begin[f], o.face_begin[f + 1]);
+    });
+  });
+  ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
+  return subdivided;
+}
+
+/// The subdivided faces as cycles, unpaired; the corners whose edge lies on a block face go to
+/// `line_corners`.
+SurfaceCycles BuildCycles(const std::vector<SubdividedFace>& subdivided,
+                          const OrderedFaces& o,
+                          std::vector<LineCorner>& line_corners,
+                          StitchStats& stitch) {
+  SurfaceCycles s;
+  for (std::size_t f = 0; f < subdivided.size(); ++f) {
+    const SubdividedFace& sub = subdivided[f];
+    const std::size_t n = sub.vertices.size();
+    stitch.inserted_vertices += n - (o.face_begin[f + 1] - o.face_begin[f]);
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto corner = static_cast<std::uint32_t>(s.corner_vertex.size());
+      s.corner_vertex.push_back(sub.vertices[k]);
+      s.corner_edge.push_back(sub.edges[k]);
+      s.partner.push_back(SurfaceFaceId::Invalid());
+      if (!sub.edges[k].IsValid()) {
+        const std::uint32_t a = sub.vertices[k];
+        const std::uint32_t b = sub.vertices[(k + 1) % n];
+        line_corners.push_back({std::min(a, b),
+                                std::max(a, b),
+                                corner,
+                                static_cast<std::uint32_t>(f),
+                                sub.lines[k].first,
+                                sub.lines[k].second});
+      }
+    }
+    s.offsets.push_back(static_cast<std::uint32_t>(s.corner_vertex.size()));
+  }
+  return s;
+}
+
+/// Pairs the faces across every edge: edges off the shared faces from each block's edge stars,
+/// blocks in parallel (each writes the partners of its own faces only), then the edges on block
+/// faces. Returns the pairs of edges with more than two faces.
+std::vector<EdgePair> PairFaces(const BlockComplexes& cx,
+                                std::span<const std::uint8_t> labels,
+                                const std::vector<std::size_t>& cell_offsets,
+                                bool outside_full,
+                                const std::vector<BlockPart>& parts,
+                                const BlockNumbering& numbering,
+                                const OrderedFaces& o,
+                                const MergedVertices& mv,
+                                std::vector<LineCorner>& line_corners,
+                                SurfaceCycles& s,
+                                BlockExtractResult& result,
+                                const RunContext& ctx) {
+  const std::size_t num_blocks = cx.blocks.size();
+  std::vector<std::vector<EdgePair>> block_crowded(num_blocks);
+  std::vector<std::size_t> block_non_manifold(num_blocks, 0);
+  RunInArena(ctx, [&] {
+    tbb::parallel_for(std::size_t{0}, num_blocks, [&](std::size_t b) {
+      const CellComplex& c = cx.blocks[b].complex;
+      std::vector<SurfaceFaceId> face_of_facet = parts[b].face_of_facet;
+      for (SurfaceFaceId& f : face_of_facet) {
+        if (f.IsValid()) f = SurfaceFaceId(f.value() + o.block_first_face[b]);
+      }
+      block_non_manifold[b] = PairAroundComplexEdges(c,
+                                                     labels.subspan(cell_offsets[b], c.NumCells()),
+                                                     outside_full,
+                                                     face_of_facet,
+                                                     numbering.edge_offset[b],
+                                                     parts[b].seam_facet,
+                                                     s,
+                                                     block_crowded[b]);
+    });
+  });
+  std::vector<EdgePair> crowded;
+  for (std::size_t b = 0; b < num_blocks; ++b) {
+    crowded.insert(crowded.end(), block_crowded[b].begin(), block_crowded[b].end());
+    result.stats.non_manifold_edges += block_non_manifold[b];
+  }
+  const auto [non_manifold, on_faces_edges] =
+      PairOnFaces(cx, mv, o.faces, line_corners, numbering.edge_offset.back(), s, crowded);
+  result.stats.non_manifold_edges += non_manifold;
+  result.stitch.edges_on_block_faces = on_faces_edges;
+  return crowded;
+}
+
+/// The mesh of the paired cycles (coplanar faces merged first when asked), with the facet of
+/// every output face and the triple of every output vertex.
+void AssembleResult(SurfaceCycles s,
+                    std::vector<EdgePair> crowded,
+                    const OrderedFaces& o,
+                    const MergedVertices& mv,
+                    const ExtractOptions& options,
+                    BlockExtractResult& result) {
+  // Faces of the cycles -> the first facet each stands for.
+  std::vector<std::uint32_t> first_face(s.NumFaces());
+  for (std::uint32_t f = 0; f < first_face.size(); ++f) first_face[f] = f;
+  if (options.merge_coplanar) {
+    MergedCycles merged =
+        MergeAcrossJoins(s, FlatJoins(s, o.faces, crowded), crowded, mv.points.size());
+    s = std::move(merged.cycles);
+    crowded = std::move(merged.crowded);
+    first_face = std::move(merged.first_face);
+    result.stitch.merged_faces = merged.merged_faces;
+  }
+  AssembledSurface surface = AssembleSurface(s, mv.points, crowded, options.triangulate);
+  result.mesh = std::move(surface.mesh);
+  result.stats.surface_facets = o.faces.size();
+  result.stats.split_vertices = surface.split_vertices;
+  result.face_facet.reserve(surface.face_cycle.size());
+  for (const std::uint32_t f : surface.face_cycle) {
+    result.face_facet.push_back(o.faces[first_face[f]]->ref);
+  }
+  result.vertex_key.reserve(surface.vertex_source.size());
+  for (const CandidateVertexId v : surface.vertex_source) {
+    result.vertex_key.push_back(v.IsValid() ? std::optional<VertexKey>(mv.keys[v.index()])
+                                            : std::nullopt);
+  }
+}
+
 }  // namespace
 
 Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
@@ -488,153 +693,32 @@ Expected<BlockExtractResult> ExtractBlockSurface(const BlockComplexes& cx,
         kInvalidInput,
         kExtractBlockSurfaceStage,
         "labels has " << labels.size() << " entries for " << cell_offsets.back() << " cells");
-    const std::size_t num_blocks = cx.blocks.size();
-    // Seams by lower block (they are listed by (lower block, axis)), block edges numbered
-    // consecutively.
-    std::vector<std::uint32_t> seam_begin(num_blocks + 1, 0);
-    for (const SeamFace& seam : cx.seams) ++seam_begin[seam.lower_block + 1];
-    for (std::size_t b = 0; b < num_blocks; ++b) seam_begin[b + 1] += seam_begin[b];
-    std::vector<std::uint32_t> edge_offset(num_blocks + 1, 0);
-    for (std::size_t b = 0; b < num_blocks; ++b) {
-      edge_offset[b + 1] =
-          edge_offset[b] + static_cast<std::uint32_t>(cx.blocks[b].complex.NumEdges());
-    }
-
+    const BlockNumbering numbering = NumberBlocks(cx);
     const Collector collector(cx, labels, cell_offsets, options.outside_full);
-    std::vector<BlockPart> parts(num_blocks);
-    RunInArena(ctx, [&] {
-      tbb::parallel_for(std::size_t{0}, num_blocks, [&](std::size_t b) {
-        if (ctx.ShouldStop()) return;
-        const std::span<const SeamFace> lower(cx.seams.data() + seam_begin[b],
-                                              seam_begin[b + 1] - seam_begin[b]);
-        parts[b] = collector.Collect(b, edge_offset[b], lower, seam_begin[b]);
-      });
-    });
-    ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
+    const std::vector<BlockPart> parts = CollectParts(cx, collector, numbering, ctx);
 
-    // All faces and corners in output order.
-    std::vector<const RawCorner*> corners;
-    std::vector<const RawFace*> faces;
-    std::vector<std::uint32_t> face_begin;  // first corner of each face in `corners`
-    std::vector<std::uint32_t> block_first_face(num_blocks + 1, 0);
     BlockExtractResult result;
-    for (std::size_t b = 0; b < num_blocks; ++b) {
-      const auto base = static_cast<std::uint32_t>(corners.size());
-      for (const RawCorner& c : parts[b].corners) corners.push_back(&c);
-      for (const RawFace& f : parts[b].faces) {
-        faces.push_back(&f);
-        face_begin.push_back(base + f.begin);
-        result.stitch.seam_surface_facets += f.ref.seam ? 1 : 0;
-      }
-      block_first_face[b + 1] = static_cast<std::uint32_t>(faces.size());
-    }
-    face_begin.push_back(static_cast<std::uint32_t>(corners.size()));
-
+    const OrderedFaces ordered = OrderFaces(parts, result.stitch);
     const double distance = kCandidateDistance * SceneMagnitude(cx);
-    const MergedVertices mv = MergeVertices(cx, corners, distance);
+    const MergedVertices mv = MergeVertices(cx, ordered.corners, distance);
     result.stitch.merged_vertex_keys = mv.merged_keys;
 
-    // Vertices on block faces, for the search of vertices inside edges.
-    const Vec3 extent = cx.grid.box().Extent();
-    const double cell =
-        std::min(cx.grid.block_size(), extent.maxCoeff()) / kEdgeSearchCellsPerBlock;
-    std::vector<std::pair<Cell3, std::uint32_t>> entries;
-    for (std::uint32_t v = 0; v < mv.keys.size(); ++v) {
-      if (mv.on_face[v] != 0) entries.push_back({CellOf(mv.points[v], cell), v});
-    }
-    const PointGrid on_faces(cell, std::move(entries));
-    std::vector<SubdividedFace> subdivided(faces.size());
-    RunInArena(ctx, [&] {
-      tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t f) {
-        if (ctx.ShouldStop()) return;
-        subdivided[f] =
-            Subdivide(cx, mv, on_faces, distance, corners, face_begin[f], face_begin[f + 1]);
-      });
-    });
-    ctx.ThrowIfCancelled(kExtractBlockSurfaceStage);
-
-    SurfaceCycles s;
     std::vector<LineCorner> line_corners;
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      const SubdividedFace& sub = subdivided[f];
-      const std::size_t n = sub.vertices.size();
-      result.stitch.inserted_vertices += n - (face_begin[f + 1] - face_begin[f]);
-      for (std::size_t k = 0; k < n; ++k) {
-        const auto corner = static_cast<std::uint32_t>(s.corner_vertex.size());
-        s.corner_vertex.push_back(sub.vertices[k]);
-        s.corner_edge.push_back(sub.edges[k]);
-        s.partner.push_back(SurfaceFaceId::Invalid());
-        if (!sub.edges[k].IsValid()) {
-          const std::uint32_t a = sub.vertices[k];
-          const std::uint32_t b = sub.vertices[(k + 1) % n];
-          line_corners.push_back({std::min(a, b),
-                                  std::max(a, b),
-                                  corner,
-                                  static_cast<std::uint32_t>(f),
-                                  sub.lines[k].first,
-                                  sub.lines[k].second});
-        }
-      }
-      s.offsets.push_back(static_cast<std::uint32_t>(s.corner_vertex.size()));
-    }
-    subdivided.clear();
-
-    // Edges off the shared faces: paired from each block's edge stars, blocks in parallel (each
-    // writes the partners of its own faces only).
-    std::vector<std::vector<EdgePair>> block_crowded(num_blocks);
-    std::vector<std::size_t> block_non_manifold(num_blocks, 0);
-    RunInArena(ctx, [&] {
-      tbb::parallel_for(std::size_t{0}, num_blocks, [&](std::size_t b) {
-        const CellComplex& c = cx.blocks[b].complex;
-        std::vector<SurfaceFaceId> face_of_facet = parts[b].face_of_facet;
-        for (SurfaceFaceId& f : face_of_facet) {
-          if (f.IsValid()) f = SurfaceFaceId(f.value() + block_first_face[b]);
-        }
-        block_non_manifold[b] =
-            PairAroundComplexEdges(c,
-                                   labels.subspan(cell_offsets[b], c.NumCells()),
-                                   options.outside_full,
-                                   face_of_facet,
-                                   edge_offset[b],
-                                   parts[b].seam_facet,
-                                   s,
-                                   block_crowded[b]);
-      });
-    });
-    std::vector<EdgePair> crowded;
-    for (std::size_t b = 0; b < num_blocks; ++b) {
-      crowded.insert(crowded.end(), block_crowded[b].begin(), block_crowded[b].end());
-      result.stats.non_manifold_edges += block_non_manifold[b];
-    }
-    const auto [non_manifold, on_faces_edges] =
-        PairOnFaces(cx, mv, faces, line_corners, edge_offset.back(), s, crowded);
-    result.stats.non_manifold_edges += non_manifold;
-    result.stitch.edges_on_block_faces = on_faces_edges;
-
-    // Faces of the cycles -> the first facet each stands for.
-    std::vector<std::uint32_t> first_face(s.NumFaces());
-    for (std::uint32_t f = 0; f < first_face.size(); ++f) first_face[f] = f;
-    if (options.merge_coplanar) {
-      MergedCycles merged =
-          MergeAcrossJoins(s, FlatJoins(s, faces, crowded), crowded, mv.points.size());
-      s = std::move(merged.cycles);
-      crowded = std::move(merged.crowded);
-      first_face = std::move(merged.first_face);
-      result.stitch.merged_faces = merged.merged_faces;
-    }
-    AssembledSurface surface = AssembleSurface(s, mv.points, crowded, options.triangulate);
-    result.mesh = std::move(surface.mesh);
-    result.stats.surface_facets = faces.size();
-    result.stats.split_vertices = surface.split_vertices;
-    result.face_facet.reserve(surface.face_cycle.size());
-    for (const std::uint32_t f : surface.face_cycle) {
-      result.face_facet.push_back(faces[first_face[f]]->ref);
-    }
-    result.vertex_key.reserve(surface.vertex_source.size());
-    for (const CandidateVertexId v : surface.vertex_source) {
-      result.vertex_key.push_back(v.IsValid() ? std::optional<VertexKey>(mv.keys[v.index()])
-                                              : std::nullopt);
-    }
+    SurfaceCycles s = BuildCycles(
+        SubdivideFaces(cx, mv, ordered, distance, ctx), ordered, line_corners, result.stitch);
+    std::vector<EdgePair> crowded = PairFaces(cx,
+                                              labels,
+                                              cell_offsets,
+                                              options.outside_full,
+                                              parts,
+                                              numbering,
+                                              ordered,
+                                              mv,
+                                              line_corners,
+                                              s,
+                                              result,
+                                              ctx);
+    AssembleResult(std::move(s), std::move(crowded), ordered, mv, options, result);
     return result;
   });
 }
