@@ -47,6 +47,11 @@ class Builder {
   void UpdateCellBounds(std::uint32_t c);
   std::uint32_t AddVertex(const std::array<std::uint32_t, 3>& def, std::vector<std::uint32_t> on);
   void AssignColours(CellComplex& cx);
+  // The phases of Finish.
+  void FinishVertices(CellComplex& cx);
+  void FinishFacetsAndEdges(CellComplex& cx);
+  void OrderEdgeStars(CellComplex& cx);
+  void FinishCells(CellComplex& cx);
 
   ExactCounter* counter_;
   std::uint32_t pid_ = 0;    // plane being inserted
@@ -371,7 +376,16 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     plane.source = p < kNumBoxPlanes ? PlaneId() : sources[p - kNumBoxPlanes];
     cx.planes.push_back(plane);
   }
-  // Vertices: rounded points and canonical triples.
+  FinishVertices(cx);
+  FinishFacetsAndEdges(cx);
+  OrderEdgeStars(cx);
+  FinishCells(cx);
+  AssignColours(cx);
+  return cx;
+}
+
+/// Vertices: rounded points and canonical triples.
+void Builder::FinishVertices(CellComplex& cx) {
   const std::size_t nv = vertex_def_.size();
   cx.vertex_points.resize(nv);
   cx.vertex_planes.resize(nv);
@@ -399,7 +413,10 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     cx.vertex_planes[VertexId(v)] = {
         ComplexPlaneId(best[0]), ComplexPlaneId(best[1]), ComplexPlaneId(best[2])};
   }
-  // Facets.
+}
+
+/// Facets with their cells and vertices, the edges (sorted vertex pairs) and facet -> edges.
+void Builder::FinishFacetsAndEdges(CellComplex& cx) {
   const std::size_t nfac = facet_cycle_.size();
   std::vector<std::uint64_t> edge_keys;
   for (std::size_t f = 0; f < nfac; ++f) {
@@ -419,7 +436,6 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
   std::vector<std::uint64_t> facet_edge_keys = edge_keys;
   std::sort(edge_keys.begin(), edge_keys.end());
   edge_keys.erase(std::unique(edge_keys.begin(), edge_keys.end()), edge_keys.end());
-  const std::size_t ne = edge_keys.size();
   for (const std::uint64_t key : edge_keys) {
     cx.edge_vertices.push_back({VertexId(static_cast<std::uint32_t>(key >> 32)),
                                 VertexId(static_cast<std::uint32_t>(key & 0xffffffffu))});
@@ -441,6 +457,11 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
       cx.facet_edges.AddRow(row);
     }
   }
+}
+
+/// The facets and cells around every edge, in cyclic order.
+void Builder::OrderEdgeStars(CellComplex& cx) {
+  const std::size_t ne = cx.edge_vertices.size();
   const Csr<EdgeId, FacetId> incident = cx.facet_edges.Transpose(ne);
   // Cyclic order around each edge by walking cell -> other facet containing the edge.
   std::vector<FacetId> ordered_facets;
@@ -482,15 +503,15 @@ CellComplex Builder::Finish(const Box3& box, const std::vector<PlaneId>& sources
     cx.edge_facets.AddRow(ordered_facets);
     cx.edge_cells.AddRow(ordered_cells);
   }
-  // Cells.
+}
+
+void Builder::FinishCells(CellComplex& cx) {
   for (std::size_t c = 0; c < cell_facets_.size(); ++c) {
     std::vector<FacetId> row;
     row.reserve(cell_facets_[c].size());
     for (const std::uint32_t f : cell_facets_[c]) row.emplace_back(f);
     cx.cell_facets.AddRow(row);
   }
-  AssignColours(cx);
-  return cx;
 }
 
 bool IsUsablePlane(const Plane3& plane) {
