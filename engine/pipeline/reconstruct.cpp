@@ -233,6 +233,100 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
   });
 }
 
+namespace {
+
+/// The surface between the labels' full and empty cells, with the cheapest pinches relabelled
+/// when `options` asks (`labels` changes with them).
+PinchRepair ExtractLabelledSurface(const PreparedReconstruction& prepared,
+                                   const EvidenceResult& evidence,
+                                   const ReconstructOptions& options,
+                                   std::vector<std::uint8_t>& labels,
+                                   const RunContext& ctx) {
+  ExtractOptions extract;
+  extract.outside_full = prepared.facts.interior;
+  extract.triangulate = options.triangulate;
+  extract.merge_coplanar = options.merge_coplanar;
+  return ValueOrThrow(ExtractWithoutPinches(prepared.blocks.complexes,
+                                            evidence.energy,
+                                            extract,
+                                            options.repair_pinches ? kPinchRepairRounds : 0,
+                                            labels,
+                                            ctx));
+}
+
+/// Completes `facts` with the labels, the evidence and the surface, judges the result (throws
+/// on an unusable one) and appends the judgement's warnings.
+void JudgeSurface(const Scene& scene,
+                  const EvidenceResult& evidence,
+                  const std::vector<std::uint8_t>& labels,
+                  const EnergyOptions& e,
+                  ResultFacts& facts,
+                  ReconstructResult& result) {
+  facts.full_cells =
+      static_cast<std::size_t>(std::count(labels.begin(), labels.end(), std::uint8_t{1}));
+  CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labels, facts);
+  facts.has_data_weight = e.weights.textural > 0.0 || e.weights.structural > 0.0 ||
+                          e.weights.visibility > 0.0 || e.weights.viewpoint_prior > 0.0;
+  facts.sigma = evidence.stats.sigma;
+  facts.samples = evidence.stats.samples;
+  facts.grazing_samples = evidence.stats.grazing_samples;
+  facts.mesh_faces = result.mesh.NumFaces();
+  ResultJudgement judgement = JudgeResult(facts);
+  if (judgement.error) throw LinesurfException(*judgement.error);
+  result.warnings.insert(result.warnings.end(), judgement.warnings.begin(),
+                         judgement.warnings.end());
+}
+
+/// On a surface the judgement accepted (not empty, not inverted; the pieces left are closed):
+/// drops floating fragments and measures the figures without ground truth, as `options` asks.
+/// The removal measures the surface it returns: those are the final figures.
+void RemoveFragmentsAndMeasure(const Scene& scene,
+                               const ReconstructOptions& options,
+                               const RunContext& ctx,
+                               StageTimer& timer,
+                               MeshTopology& topology,
+                               ReconstructResult& result) {
+  RunStats& stats = result.stats;
+  const double epsilon = stats.detection.epsilon.epsilon;
+  std::optional<SurfaceQuality> measured;
+  if (options.remove_floating_fragments) {
+    timer.Start("fragments");
+    FragmentRemoval kept = ValueOrThrow(
+        RemoveFloatingFragments(result.mesh, scene, epsilon, options.quality, ctx));
+    if (kept.removed_components > 0) {
+      result.mesh = std::move(kept.mesh);
+      topology = ComputeMeshTopology(result.mesh);
+    }
+    stats.fragments = MakeFragmentStats(kept);
+    measured = std::move(kept.quality);
+    timer.Stop();
+  }
+  // Figures without ground truth, in the local frame, on a surface the judgement accepted.
+  if (options.measure_quality) {
+    timer.Start("quality");
+    stats.quality = MakeQualityStats(
+        measured ? std::move(*measured)
+                 : ValueOrThrow(
+                       MeasureSurfaceQuality(result.mesh, scene, epsilon, options.quality, ctx)));
+    timer.Stop();
+  }
+}
+
+/// The mesh to world coordinates, as written: never returned broken; what only a solid must not
+/// have is said.
+void CheckWorldSurface(const Scene& scene, StageTimer& timer, ReconstructResult& result) {
+  for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
+  timer.Start("validity");
+  const MeshValidity validity = ValueOrThrow(CheckMeshValidity(result.mesh));
+  if (Status refused = RefuseBrokenSurface(validity); !refused) {
+    throw LinesurfException(refused.error());
+  }
+  for (std::string& w : SolidValidityWarnings(validity)) result.warnings.push_back(std::move(w));
+  timer.Stop();
+}
+
+}  // namespace
+
 Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared,
                                           const ReconstructOptions& options,
                                           const RunContext& ctx) noexcept {
@@ -267,17 +361,7 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     stats.labeling = MakeLabelingStats(labeling);
 
     timer.Start("extract");
-    ExtractOptions extract;
-    extract.outside_full = interior;
-    extract.triangulate = options.triangulate;
-    extract.merge_coplanar = options.merge_coplanar;
-    PinchRepair repaired = ValueOrThrow(
-        ExtractWithoutPinches(prepared.blocks.complexes,
-                              evidence.energy,
-                              extract,
-                              options.repair_pinches ? kPinchRepairRounds : 0,
-                              labels,
-                              stage_ctx));
+    PinchRepair repaired = ExtractLabelledSurface(prepared, evidence, options, labels, stage_ctx);
     BlockExtractResult& surface = repaired.surface;
     const OpenSeamSurface open =
         MeasureOpenSeamSurface(prepared.blocks.complexes, surface.mesh, surface.face_facet);
@@ -288,57 +372,10 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
     MeshTopology topology = ComputeMeshTopology(result.mesh);
     timer.Stop();
 
-    facts.full_cells =
-        static_cast<std::size_t>(std::count(labels.begin(), labels.end(), std::uint8_t{1}));
-    CountViewpointsInFullCells(scene, evidence.viewpoint_cells, labels, facts);
-    const EnergyOptions& e = options.energy;
-    facts.has_data_weight = e.weights.textural > 0.0 || e.weights.structural > 0.0 ||
-                            e.weights.visibility > 0.0 || e.weights.viewpoint_prior > 0.0;
-    facts.sigma = evidence.stats.sigma;
-    facts.samples = evidence.stats.samples;
-    facts.grazing_samples = evidence.stats.grazing_samples;
     facts.topology = topology;
-    facts.mesh_faces = result.mesh.NumFaces();
-    ResultJudgement judgement = JudgeResult(facts);
-    if (judgement.error) throw LinesurfException(*judgement.error);
-    result.warnings.insert(result.warnings.end(), judgement.warnings.begin(),
-                           judgement.warnings.end());
-
-    // On a surface the judgement accepted (not empty, not inverted); the pieces left are closed.
-    // The removal measures the surface it returns: those are the final figures.
-    const double epsilon = stats.detection.epsilon.epsilon;
-    std::optional<SurfaceQuality> measured;
-    if (options.remove_floating_fragments) {
-      timer.Start("fragments");
-      FragmentRemoval kept = ValueOrThrow(
-          RemoveFloatingFragments(result.mesh, scene, epsilon, options.quality, stage_ctx));
-      if (kept.removed_components > 0) {
-        result.mesh = std::move(kept.mesh);
-        topology = ComputeMeshTopology(result.mesh);
-      }
-      stats.fragments = MakeFragmentStats(kept);
-      measured = std::move(kept.quality);
-      timer.Stop();
-    }
-
-    // Figures without ground truth, in the local frame, on a surface the judgement accepted.
-    if (options.measure_quality) {
-      timer.Start("quality");
-      stats.quality = MakeQualityStats(
-          measured ? std::move(*measured)
-                   : ValueOrThrow(MeasureSurfaceQuality(
-                         result.mesh, scene, epsilon, options.quality, stage_ctx)));
-      timer.Stop();
-    }
-    for (Vec3& p : result.mesh.vertices) p = scene.world_from_local.Apply(p);
-    // The surface as written: never returned broken; what only a solid must not have is said.
-    timer.Start("validity");
-    const MeshValidity validity = ValueOrThrow(CheckMeshValidity(result.mesh));
-    if (Status refused = RefuseBrokenSurface(validity); !refused) {
-      throw LinesurfException(refused.error());
-    }
-    for (std::string& w : SolidValidityWarnings(validity)) result.warnings.push_back(std::move(w));
-    timer.Stop();
+    JudgeSurface(scene, evidence, labels, options.energy, facts, result);
+    RemoveFragmentsAndMeasure(scene, options, stage_ctx, timer, topology, result);
+    CheckWorldSurface(scene, timer, result);
 
     // Planes back to world coordinates.
     result.planes = scene.planes;
