@@ -243,15 +243,7 @@ class Pdhg {
   /// time_limit_seconds: 0 = none.
   LpSolution Run(double time_limit_seconds) {
     const auto start = std::chrono::steady_clock::now();
-    const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
-    std::vector<double> x(n), y(m, 0.0), ax(m), aty(n, 0.0);
-    for (std::size_t j = 0; j < n; ++j) x[j] = std::clamp(0.0, s_.col_lower[j], s_.col_upper[j]);
-    s_.a.Multiply(x, ax);
-    std::vector<double> x_next(n), y_next(m), ax_next(m);
-    std::vector<double> x_sum(n, 0.0), y_sum(m, 0.0), ax_sum(m, 0.0), aty_sum(n, 0.0);
-    std::vector<double> x_avg(n), y_avg(m), ax_avg(m), aty_avg(n);
-    std::vector<double> x_restart = x, y_restart = y;
-
+    Iterates v = Initial();
     const double cost_norm = Norm2(s_.cost);
     const double bound_norm = BoundNorm(s_.row_lower, s_.row_upper);
     double omega = cost_norm > 0.0 && bound_norm > 0.0 ? cost_norm / bound_norm : 1.0;
@@ -263,28 +255,7 @@ class Pdhg {
     double merit_at_restart = -1.0;
     double last_candidate_merit = std::numeric_limits<double>::infinity();
     for (std::int64_t it = 1; it <= options_.max_iterations; ++it) {
-      const double tau = kStepSize / omega, sigma = kStepSize * omega;
-      // Primal step: x+ = proj(x - tau (c - A^T y)).
-      ForChunks(n, [&](std::size_t b, std::size_t e) {
-        for (std::size_t j = b; j < e; ++j) {
-          x_next[j] = std::clamp(x[j] - tau * (s_.cost[j] - aty[j]), s_.col_lower[j], s_.col_upper[j]);
-          x_sum[j] += x_next[j];
-        }
-      });
-      s_.a.Multiply(x_next, ax_next, &ax_sum);
-      // Dual step on the extrapolated point: v = y - sigma A(2x+ - x),
-      // y+ = v + sigma proj_[l,u](-v / sigma).
-      ForChunks(m, [&](std::size_t b, std::size_t e) {
-        for (std::size_t r = b; r < e; ++r) {
-          const double v = y[r] - sigma * (2.0 * ax_next[r] - ax[r]);
-          y_next[r] = v + sigma * std::clamp(-v / sigma, s_.row_lower[r], s_.row_upper[r]);
-          y_sum[r] += y_next[r];
-        }
-      });
-      x.swap(x_next);
-      y.swap(y_next);
-      ax.swap(ax_next);
-      s_.at.Multiply(y, aty, &aty_sum);
+      Step(kStepSize / omega, kStepSize * omega, v);
       ++since_restart;
       // Cancellation is polled every iteration (one iteration of a large LP takes 50-150 ms).
       LINESURF_THROW_IF(
@@ -298,25 +269,13 @@ class Pdhg {
                         kPdhgBackendStage,
                         "pdhg stopped at the time limit of " << time_limit_seconds << " s after "
                                                              << it << " iterations");
-      const double inv = 1.0 / static_cast<double>(since_restart);
-      ForChunks(n, [&](std::size_t b, std::size_t e) {
-        for (std::size_t j = b; j < e; ++j) {
-          x_avg[j] = x_sum[j] * inv;
-          aty_avg[j] = aty_sum[j] * inv;
-        }
-      });
-      ForChunks(m, [&](std::size_t b, std::size_t e) {
-        for (std::size_t r = b; r < e; ++r) {
-          y_avg[r] = y_sum[r] * inv;
-          ax_avg[r] = ax_sum[r] * inv;
-        }
-      });
-      const KktErrors current = ComputeErrors(lp_, s_, x, y, ax, aty);
-      const KktErrors average = ComputeErrors(lp_, s_, x_avg, y_avg, ax_avg, aty_avg);
+      Average(since_restart, v);
+      const KktErrors current = ComputeErrors(lp_, s_, v.x, v.y, v.ax, v.aty);
+      const KktErrors average = ComputeErrors(lp_, s_, v.x_avg, v.y_avg, v.ax_avg, v.aty_avg);
       for (const auto* candidate : {&current, &average}) {
         if (Converged(*candidate, eps, b_norm, c_norm)) {
           const bool is_avg = candidate == &average;
-          return Finish(is_avg ? x_avg : x, is_avg ? y_avg : y, it);
+          return Finish(is_avg ? v.x_avg : v.x, is_avg ? v.y_avg : v.y, it);
         }
       }
       const double merit_current = Merit(current, omega);
@@ -328,23 +287,10 @@ class Pdhg {
           ShouldRestart(candidate_merit, merit_at_restart, last_candidate_merit, since_restart, it);
       last_candidate_merit = candidate_merit;
       if (!restart) continue;
-      if (use_average) {
-        x.swap(x_avg);
-        y.swap(y_avg);
-        ax.swap(ax_avg);
-        aty.swap(aty_avg);
-      }
-      // Primal weight: balance the primal and dual movement since the last restart.
-      omega = SmoothedPrimalWeight(omega, ChunkedDistance(x, x_restart), ChunkedDistance(y, y_restart));
-      x_restart = x;
-      y_restart = y;
+      omega = Restart(use_average, omega, v);
       merit_at_restart = Merit(use_average ? average : current, omega);
       last_candidate_merit = std::numeric_limits<double>::infinity();
       since_restart = 0;
-      std::fill(x_sum.begin(), x_sum.end(), 0.0);
-      std::fill(y_sum.begin(), y_sum.end(), 0.0);
-      std::fill(ax_sum.begin(), ax_sum.end(), 0.0);
-      std::fill(aty_sum.begin(), aty_sum.end(), 0.0);
     }
     ThrowError(ErrorCode::kSolverFailed,
                kPdhgBackendStage,
@@ -353,6 +299,107 @@ class Pdhg {
   }
 
  private:
+  /// The scaled iterates (with A x and A^T y), their sums and averages since the last restart,
+  /// and the point of the last restart.
+  struct Iterates {
+    std::vector<double> x, y, ax, aty;
+    std::vector<double> x_next, y_next, ax_next;
+    std::vector<double> x_sum, y_sum, ax_sum, aty_sum;
+    std::vector<double> x_avg, y_avg, ax_avg, aty_avg;
+    std::vector<double> x_restart, y_restart;
+  };
+
+  /// x at the bound nearest 0, y = 0.
+  [[nodiscard]] Iterates Initial() const {
+    const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
+    Iterates v;
+    v.x.resize(n);
+    v.y.assign(m, 0.0);
+    v.ax.resize(m);
+    v.aty.assign(n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) v.x[j] = std::clamp(0.0, s_.col_lower[j], s_.col_upper[j]);
+    s_.a.Multiply(v.x, v.ax);
+    v.x_next.resize(n);
+    v.y_next.resize(m);
+    v.ax_next.resize(m);
+    v.x_sum.assign(n, 0.0);
+    v.y_sum.assign(m, 0.0);
+    v.ax_sum.assign(m, 0.0);
+    v.aty_sum.assign(n, 0.0);
+    v.x_avg.resize(n);
+    v.y_avg.resize(m);
+    v.ax_avg.resize(m);
+    v.aty_avg.resize(n);
+    v.x_restart = v.x;
+    v.y_restart = v.y;
+    return v;
+  }
+
+  /// One PDHG iteration with primal step tau and dual step sigma, added to the sums.
+  void Step(double tau, double sigma, Iterates& v) const {
+    const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
+    // Primal step: x+ = proj(x - tau (c - A^T y)).
+    ForChunks(n, [&](std::size_t b, std::size_t e) {
+      for (std::size_t j = b; j < e; ++j) {
+        v.x_next[j] =
+            std::clamp(v.x[j] - tau * (s_.cost[j] - v.aty[j]), s_.col_lower[j], s_.col_upper[j]);
+        v.x_sum[j] += v.x_next[j];
+      }
+    });
+    s_.a.Multiply(v.x_next, v.ax_next, &v.ax_sum);
+    // Dual step on the extrapolated point: v = y - sigma A(2x+ - x),
+    // y+ = v + sigma proj_[l,u](-v / sigma).
+    ForChunks(m, [&](std::size_t b, std::size_t e) {
+      for (std::size_t r = b; r < e; ++r) {
+        const double w = v.y[r] - sigma * (2.0 * v.ax_next[r] - v.ax[r]);
+        v.y_next[r] = w + sigma * std::clamp(-w / sigma, s_.row_lower[r], s_.row_upper[r]);
+        v.y_sum[r] += v.y_next[r];
+      }
+    });
+    v.x.swap(v.x_next);
+    v.y.swap(v.y_next);
+    v.ax.swap(v.ax_next);
+    s_.at.Multiply(v.y, v.aty, &v.aty_sum);
+  }
+
+  /// The averages of the `count` iterates since the last restart.
+  void Average(std::int64_t count, Iterates& v) const {
+    const std::size_t m = lp_.NumRows(), n = lp_.NumColumns();
+    const double inv = 1.0 / static_cast<double>(count);
+    ForChunks(n, [&](std::size_t b, std::size_t e) {
+      for (std::size_t j = b; j < e; ++j) {
+        v.x_avg[j] = v.x_sum[j] * inv;
+        v.aty_avg[j] = v.aty_sum[j] * inv;
+      }
+    });
+    ForChunks(m, [&](std::size_t b, std::size_t e) {
+      for (std::size_t r = b; r < e; ++r) {
+        v.y_avg[r] = v.y_sum[r] * inv;
+        v.ax_avg[r] = v.ax_sum[r] * inv;
+      }
+    });
+  }
+
+  /// Restarts from the average (`use_average`) or the current point; returns the primal weight
+  /// that balances the primal and dual movement since the last restart.
+  static double Restart(bool use_average, double omega, Iterates& v) {
+    if (use_average) {
+      v.x.swap(v.x_avg);
+      v.y.swap(v.y_avg);
+      v.ax.swap(v.ax_avg);
+      v.aty.swap(v.aty_avg);
+    }
+    const double weight = SmoothedPrimalWeight(
+        omega, ChunkedDistance(v.x, v.x_restart), ChunkedDistance(v.y, v.y_restart));
+    v.x_restart = v.x;
+    v.y_restart = v.y;
+    std::fill(v.x_sum.begin(), v.x_sum.end(), 0.0);
+    std::fill(v.y_sum.begin(), v.y_sum.end(), 0.0);
+    std::fill(v.ax_sum.begin(), v.ax_sum.end(), 0.0);
+    std::fill(v.aty_sum.begin(), v.aty_sum.end(), 0.0);
+    return weight;
+  }
+
   static bool Converged(const KktErrors& e, double eps, double b_norm, double c_norm) {
     return e.primal_residual <= eps * (1.0 + b_norm) && e.dual_residual <= eps * (1.0 + c_norm) &&
            e.Gap() <= eps * (1.0 + std::abs(e.primal_objective) + std::abs(e.dual_objective));
