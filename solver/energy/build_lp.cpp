@@ -8,8 +8,16 @@
 
 namespace linesurf::solver {
 
-ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
-  ReducedEnergy out;
+namespace {
+
+/// Value of a fixed cell (0 or 1).
+int FixedValue(const EnergyInput& energy, CellId c) {
+  return energy.fixed[c] == CellFix::kFull ? 1 : 0;
+}
+
+/// A column per free cell (in id order) with its unary; the unaries of fixed cells go to the
+/// constant.
+void ReduceCells(const EnergyInput& energy, ReducedEnergy& out) {
   const std::size_t n = energy.NumCells();
   out.column_of_cell.assign(n, kNoColumn);
   for (std::size_t c = 0; c < n; ++c) {
@@ -27,9 +35,12 @@ ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
       out.constant += energy.cost_if_full[id];
     }
   }
-  // Value of a fixed cell (0 or 1).
-  auto fixed_value = [&](CellId c) { return energy.fixed[c] == CellFix::kFull ? 1 : 0; };
+}
 
+/// Pair terms between two free cells stay pairs; with a fixed cell they become unaries or
+/// constants.
+void ReducePairs(const EnergyInput& energy, ReducedEnergy& out) {
+  const auto fixed_value = [&](CellId c) { return FixedValue(energy, c); };
   for (const PairTerm& t : energy.pairs) {
     if (!(t.weight > 0.0)) continue;
     const std::uint32_t ca = out.column_of_cell[t.a.index()];
@@ -49,9 +60,13 @@ ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
       }
     }
   }
+}
 
+/// Structural groups over their free cells: none left or a full cell give constants, one free
+/// cell a unary.
+void ReduceStructuralGroups(const EnergyInput& energy, ReducedEnergy& out) {
+  const auto fixed_value = [&](CellId c) { return FixedValue(energy, c); };
   std::vector<std::uint32_t> cols;
-  std::vector<std::int8_t> signs;
   for (std::size_t g = 0; g < energy.NumStructuralGroups(); ++g) {
     const double w = energy.structural_weights[g];
     if (!(w > 0.0)) continue;
@@ -77,7 +92,13 @@ ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
       out.structural_weights.push_back(w);
     }
   }
+}
 
+/// Parity groups over their free cells, the fixed cells folded into the constant k.
+void ReduceParityGroups(const EnergyInput& energy, ReducedEnergy& out) {
+  const auto fixed_value = [&](CellId c) { return FixedValue(energy, c); };
+  std::vector<std::uint32_t> cols;
+  std::vector<std::int8_t> signs;
   for (std::size_t g = 0; g < energy.NumParityGroups(); ++g) {
     const double w = energy.parity_weights[g];
     if (!(w > 0.0)) continue;
@@ -109,6 +130,16 @@ ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
       out.parity_constants.push_back(k);
     }
   }
+}
+
+}  // namespace
+
+ReducedEnergy ReduceEnergy(const EnergyInput& energy) {
+  ReducedEnergy out;
+  ReduceCells(energy, out);
+  ReducePairs(energy, out);
+  ReduceStructuralGroups(energy, out);
+  ReduceParityGroups(energy, out);
   return out;
 }
 
