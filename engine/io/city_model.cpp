@@ -192,10 +192,10 @@ bool AllStraightBetween(const PolygonMesh& mesh,
 /// and stays whatever its angles: at a gable's ridge end next to the points where a stray
 /// plane cut the roof edges a tenth of a millimetre away, every ring looks straight within the
 /// tolerance, and dropping the ridge end from all of them would join polygons that do not meet
-/// (building_422 of city-1000). A point only one ring passes (the rim of an open surface) is
-/// dropped when straight. Each dropped point stays within `tolerance` of the edge that replaces
-/// it and of the points it replaced; points are visited in index order, so the result is
-/// deterministic.
+/// (test CityJson.RidgeEndNextToSliverCutStaysAndTheShellStaysClosed). A point only one ring
+/// passes (the rim of an open surface) is dropped when straight. Each dropped point stays within
+/// `tolerance` of the edge that replaces it and of the points it replaced; points are visited in
+/// index order, so the result is deterministic.
 void DropStraightRingPoints(const PolygonMesh& mesh, double tolerance, CityBuilding& building) {
   std::vector<std::vector<std::uint32_t>*> rings;
   for (CityPolygon& polygon : building.polygons) {
