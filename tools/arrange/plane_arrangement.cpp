@@ -20,6 +20,12 @@ struct PlaneArrangement::Impl {
   Vec3 centre = Vec3::Zero();  ///< world position of the complex's origin
 };
 
+bool IsBox(const Vector3& box_min, const Vector3& box_max) noexcept {
+  const Vec3 min = ToVec3(box_min);
+  const Vec3 max = ToVec3(box_max);
+  return min.allFinite() && max.allFinite() && (min.array() < max.array()).all();
+}
+
 Status ValidateCellsShrink(double shrink) noexcept {
   partition::CellsPlyOptions options;
   options.shrink = shrink;
@@ -36,13 +42,11 @@ Expected<PlaneArrangement> PlaneArrangement::Build(const Vector3& box_min,
                                                    std::span<const Plane> planes,
                                                    const RunControl& control) noexcept {
   return CatchAll(kArrangeStage, [&] {
+    LINESURF_THROW_IF(!IsBox(box_min, box_max), kInvalidInput, kArrangeStage,
+                      "the box needs finite corners with min < max on every axis");
     Box3 world_box;
     world_box.min = ToVec3(box_min);
     world_box.max = ToVec3(box_max);
-    LINESURF_THROW_IF(!world_box.min.allFinite() || !world_box.max.allFinite() ||
-                          !(world_box.min.array() < world_box.max.array()).all(),
-                      kInvalidInput, kArrangeStage,
-                      "the box needs finite corners with min < max on every axis");
     auto impl = std::make_unique<Impl>();
     impl->centre = world_box.Center();
     const Box3 box{world_box.min - impl->centre, world_box.max - impl->centre};

@@ -31,6 +31,9 @@ struct ArrangementCounts {
   double seconds = 0.0;
 };
 
+/// True when both corners are finite and min < max on every axis (what Build accepts).
+[[nodiscard]] bool IsBox(const Vector3& box_min, const Vector3& box_max) noexcept;
+
 /// kInvalidOptions unless `shrink` (of WriteCellsPly) is in (0, 1].
 [[nodiscard]] Status ValidateCellsShrink(double shrink) noexcept;
 

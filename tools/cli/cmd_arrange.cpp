@@ -8,7 +8,6 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/output_files.h"
 
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -30,12 +29,9 @@ struct ArrangeArgs {
 int Run(const ArrangeArgs& args, const CommonOptions& common) {
   const Vector3 box_min{args.box[0], args.box[1], args.box[2]};
   const Vector3 box_max{args.box[3], args.box[4], args.box[5]};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!std::isfinite(box_min[axis]) || !std::isfinite(box_max[axis]) ||
-        !(box_min[axis] < box_max[axis])) {
-      return ReportError(Error{ErrorCode::kInvalidOptions, "arrange",
-                               "--box needs XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX"});
-    }
+  if (!arrange::IsBox(box_min, box_max)) {
+    return ReportError(Error{ErrorCode::kInvalidOptions, "arrange",
+                             "--box needs XMIN < XMAX, YMIN < YMAX, ZMIN < ZMAX"});
   }
   if (Status valid = arrange::ValidateCellsShrink(args.shrink); !valid) {
     return ReportError(valid.error());
