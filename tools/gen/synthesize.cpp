@@ -454,6 +454,12 @@ SyntheticScene Build(const SynthSpec& spec) {
 
 }  // namespace
 
+std::array<std::size_t, 3> CountKinds(const std::vector<SegmentKind>& kinds) noexcept {
+  std::array<std::size_t, 3> counts{0, 0, 0};
+  for (const SegmentKind k : kinds) ++counts[static_cast<std::size_t>(k)];
+  return counts;
+}
+
 const char* SegmentKindName(SegmentKind kind) noexcept {
   switch (kind) {
     case SegmentKind::kStructural:

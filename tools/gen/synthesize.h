@@ -34,6 +34,9 @@ enum class SegmentKind : std::uint8_t {
 /// Name of a kind: "structural", "textural" or "outlier".
 const char* SegmentKindName(SegmentKind kind) noexcept;
 
+/// Segments of each kind, indexed by SegmentKind (structural, textural, outlier).
+[[nodiscard]] std::array<std::size_t, 3> CountKinds(const std::vector<SegmentKind>& kinds) noexcept;
+
 struct SyntheticScene {
   /// The spec that produced the scene (family defaults not filled in).
   SynthSpec spec;

@@ -9,6 +9,7 @@
 
 #include <tbb/task_arena.h>
 
+#include <array>
 #include <utility>
 
 namespace linesurf::synth {
@@ -42,11 +43,10 @@ Status SyntheticFiles::WriteMeta(const std::filesystem::path& path) const noexce
 SyntheticSummary SyntheticFiles::Summary() const noexcept {
   SyntheticSummary summary;
   summary.segments = scene_->scene.segments.size();
-  for (const SegmentKind kind : scene_->kinds) {
-    if (kind == SegmentKind::kStructural) ++summary.structural;
-    else if (kind == SegmentKind::kTextural) ++summary.textural;
-    else ++summary.outliers;
-  }
+  const std::array<std::size_t, 3> kinds = CountKinds(scene_->kinds);
+  summary.structural = kinds[static_cast<std::size_t>(SegmentKind::kStructural)];
+  summary.textural = kinds[static_cast<std::size_t>(SegmentKind::kTextural)];
+  summary.outliers = kinds[static_cast<std::size_t>(SegmentKind::kOutlier)];
   summary.viewpoints = scene_->scene.viewpoints.size();
   summary.true_planes = scene_->true_planes.size();
   summary.ground_truth_faces = scene_->ground_truth.NumFaces();

@@ -1,5 +1,6 @@
 #include "tools/gen/synthetic_meta.h"
 
+#include <array>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -50,8 +51,7 @@ std::string SyntheticMetaJson(const SyntheticScene& s) {
   gt["vertices"] = s.ground_truth.vertices.size();
   gt["faces"] = s.ground_truth.NumFaces();
   j["ground_truth"] = gt;
-  std::size_t counts[3] = {0, 0, 0};
-  for (SegmentKind k : s.kinds) ++counts[static_cast<int>(k)];
+  const std::array<std::size_t, 3> counts = CountKinds(s.kinds);
   nlohmann::ordered_json jc;
   jc["segments"] = s.kinds.size();
   jc["structural"] = counts[0];
