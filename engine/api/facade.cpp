@@ -24,7 +24,7 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 namespace {
 
 /// ValueOrThrow for a check of what goes into `path`: the error names the file.
@@ -72,6 +72,7 @@ Status WriteCityModel(const char* stage,
                       const GeoreferenceOptions& options,
                       Write write) {
   return CatchAll(stage, [&] {
+    ThrowIfInvalid(options.Validate());
     const PolygonMesh engine_mesh = ValueOrThrowFor(ToPolygonMesh(mesh), path);
     std::vector<Plane3> engine_planes;
     engine_planes.reserve(planes.size());
@@ -178,8 +179,11 @@ Expected<ReadSceneResult> ReadScene(const std::string& path, const ReadOptions& 
 
 Expected<SanitizedScene> SanitizeScene(const SceneData& scene) noexcept {
   return CatchAll("sanitize", [&]() -> SanitizedScene {
+    // The input's axes: what is converted or described keeps its coordinates.
+    pipeline::SanitizeOptions options;
+    options.align_to_data_frame = false;
     pipeline::SanitizeResult sane =
-        ValueOrThrow(pipeline::SanitizeScene(ToEngineSceneData(scene), {}));
+        ValueOrThrow(pipeline::SanitizeScene(ToEngineSceneData(scene), options));
     SanitizedScene out{api::ToSceneData(sane.scene), {}, std::move(sane.warnings)};
     out.input_segment.reserve(sane.input_segment.size());
     for (const SegmentId s : sane.input_segment) out.input_segment.push_back(s.value());
@@ -292,5 +296,5 @@ bool IsCityJsonSeqPath(const std::string& path) noexcept {
   return IsPathOf(path, [](const std::string& p) { return io::IsCityJsonSeqPath(p); });
 }
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -125,6 +125,15 @@ void WriteDetection(const DetectionStats& s, Json& report) {
   report["epsilon"] = EpsilonJson(s.epsilon);
 }
 
+void WriteFrame(const FrameStats& s, Json& report) {
+  report["frame"] = Json{{"aligned", s.aligned},
+                         {"axes", s.axes},
+                         {"up", s.up},
+                         {"up_evidence", s.up_evidence},
+                         {"up_sign", s.up_sign},
+                         {"axis_share", s.axis_share}};
+}
+
 void WriteComplex(const ComplexStats& s, Json& report) {
   report["counts"].update(Json{{"planes_in_complex", s.planes_in_complex},
                                {"blocks", s.blocks},
@@ -208,7 +217,7 @@ void WriteResources(const ResourceStats& s, Json& report) {
 
 /// The run report's top-level keys in the order it lists them (linesurf 1's order, with
 /// stats_version first). A key not listed here follows them, in the order it was written.
-constexpr std::array<std::string_view, 20> kReportOrder = {
+constexpr std::array<std::string_view, 21> kReportOrder = {
     "stats_version",
     "options",
     "stage_seconds",
@@ -223,6 +232,7 @@ constexpr std::array<std::string_view, 20> kReportOrder = {
     "sigma",
     "crease_weight",
     "epsilon",
+    "frame",
     "quality",
     "solver",
     "mesh",
@@ -255,6 +265,7 @@ std::string ReportJson(const ReconstructResult& result, const ReconstructOptions
   j["mesh"] = Json::object();
   WriteInputs(s.inputs, j);
   WriteDetection(s.detection, j);
+  WriteFrame(s.frame, j);
   WriteComplex(s.complex, j);
   WriteSceneMode(s.scene, j);
   WriteEnergy(s.energy, j);
@@ -306,5 +317,5 @@ std::string ReportJson(const MeshValidity& validity) { return Dump(ValidityJson(
 
 std::string ReportJson(const SurfaceQuality& quality) { return Dump(QualityJson(quality)); }
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

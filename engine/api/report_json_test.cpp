@@ -90,6 +90,7 @@ TEST(ReportJson, TopLevelKeysKeepTheirPlacesWithStatsVersionFirst) {
                                       "sigma",
                                       "crease_weight",
                                       "epsilon",
+                                      "frame",
                                       "quality",
                                       "solver",
                                       "mesh",
@@ -183,7 +184,7 @@ TEST(ReportJson, QualityOnlyWhenMeasured) {
   r.stats.quality.measured = false;
   const Json report = Json::parse(ReportJson(r, ReconstructOptions{}));
   EXPECT_FALSE(report.contains("quality"));
-  EXPECT_EQ(Keys(report).size(), 19u);
+  EXPECT_EQ(Keys(report).size(), 20u);
 }
 
 }  // namespace

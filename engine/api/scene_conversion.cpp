@@ -100,7 +100,7 @@ Expected<Scene> ToEngineScene(const InputScene& input,
 }
 
 SceneData ToSceneData(const Scene& scene) {
-  const Vec3& t = scene.world_from_local.translation;
+  const Rigid3& t = scene.world_from_local;
   SceneData data;
   data.segments.reserve(scene.NumSegments());
   for (const Segment3& s : scene.segments) {
@@ -153,7 +153,8 @@ std::vector<Plane> ToWorldPlanes(const IdVector<PlaneId, Plane3>& planes,
   out.reserve(planes.size());
   for (const Plane3& p : planes) {
     out.push_back(
-        Plane{ToVector3(ToWorldExact(p.point, world_from_local.translation)), ToVector3(p.normal)});
+        Plane{ToVector3(ToWorldExact(p.point, world_from_local)),
+              ToVector3(world_from_local.Rotate(p.normal))});
   }
   return out;
 }

@@ -8,7 +8,7 @@
 #include "engine/pipeline/reconstruct.h"
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 namespace {
 
 /// The engine's rule, reported as an option error of the facade.
@@ -37,5 +37,5 @@ Status ReconstructOptions::Validate() const noexcept {
   return AsOptionError(pipeline::ValidateMergeCoplanar(merge_coplanar, triangulate));
 }
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

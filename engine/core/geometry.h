@@ -57,13 +57,24 @@ inline bool BoxMeetsSlab(const Vec3& center, const Vec3& half_extent, const Plan
          plane.normal.cwiseAbs().dot(half_extent) + half_thickness;
 }
 
-/// Rigid transform restricted to a translation: world = local + translation. Recentring is all
-/// linesurf needs (georeferenced inputs sit 1e6 m from the origin).
+/// Rigid transform: world = rotation * local + translation. Sanitation sets the translation
+/// (georeferenced inputs sit 1e6 m from the origin) and, when it aligns the scene with the data's
+/// own axes (engine/pipeline/data_frame.h), the rotation; an identity rotation is never applied,
+/// so that a translation-only frame keeps its values exact.
 struct Rigid3 {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Vec3 translation = Vec3::Zero();
 
-  [[nodiscard]] Vec3 Apply(const Vec3& local) const { return local + translation; }
-  [[nodiscard]] Vec3 ApplyInverse(const Vec3& world) const { return world - translation; }
+  [[nodiscard]] bool HasRotation() const { return rotation != Eigen::Matrix3d::Identity(); }
+  /// A direction (a normal, an axis) from local to world.
+  [[nodiscard]] Vec3 Rotate(const Vec3& local) const {
+    return HasRotation() ? Vec3(rotation * local) : local;
+  }
+  [[nodiscard]] Vec3 Apply(const Vec3& local) const { return Rotate(local) + translation; }
+  [[nodiscard]] Vec3 ApplyInverse(const Vec3& world) const {
+    const Vec3 moved = world - translation;
+    return HasRotation() ? Vec3(rotation.transpose() * moved) : moved;
+  }
 };
 
 }  // namespace linesurf

@@ -16,4 +16,10 @@ namespace linesurf {
   return world;
 }
 
+/// A point from the local frame to world coordinates: rotated (when the frame is), then
+/// translated as ToWorldExact above.
+[[nodiscard]] inline Vec3 ToWorldExact(const Vec3& local, const Rigid3& world_from_local) {
+  return ToWorldExact(world_from_local.Rotate(local), world_from_local.translation);
+}
+
 }  // namespace linesurf

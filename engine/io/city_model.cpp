@@ -52,15 +52,17 @@ std::optional<std::size_t> FacePlane(const PolygonMesh& mesh,
   return best;
 }
 
-SurfaceClass ClassOf(const Vec3& normal, bool solid) {
-  const bool wall = std::abs(normal.z()) <= std::sin(kWallMaxTiltDeg * M_PI / 180.0);
+/// `up` is unit.
+SurfaceClass ClassOf(const Vec3& normal, const Vec3& up, bool solid) {
+  const double rise = normal.dot(up);
+  const bool wall = std::abs(rise) <= std::sin(kWallMaxTiltDeg * M_PI / 180.0);
   if (solid) {
     if (wall) return SurfaceClass::kWall;
-    return normal.z() > 0.0 ? SurfaceClass::kRoof : SurfaceClass::kGround;
+    return rise > 0.0 ? SurfaceClass::kRoof : SurfaceClass::kGround;
   }
   // Seen from inside, a face's normal points into the room.
   if (wall) return SurfaceClass::kInteriorWall;
-  return normal.z() > 0.0 ? SurfaceClass::kFloor : SurfaceClass::kCeiling;
+  return rise > 0.0 ? SurfaceClass::kFloor : SurfaceClass::kCeiling;
 }
 
 void CheckFaces(const PolygonMesh& mesh, const std::string& file) {
@@ -117,6 +119,7 @@ double SixVolume(const PolygonMesh& mesh, std::span<const std::uint32_t> faces,
 CityBuilding BuildBuilding(const PolygonMesh& mesh,
                            std::span<const std::uint32_t> faces,
                            std::span<const Plane3> planes,
+                           const Vec3& up,
                            const Box3& box) {
   CityBuilding building;
   building.solid = SixVolume(mesh, faces, box.min) > 0.0;
@@ -131,7 +134,7 @@ CityBuilding BuildBuilding(const PolygonMesh& mesh,
     const Vec3 normal = FaceNormal(mesh, mesh.Face(f));
     const std::optional<std::size_t> plane =
         FacePlane(mesh, mesh.Face(f), normal, planes, tolerance);
-    const CitySurface surface{plane, ClassOf(normal, building.solid)};
+    const CitySurface surface{plane, ClassOf(normal, up, building.solid)};
     std::size_t group = groups.size();
     if (plane) {
       const bool side = planes[*plane].normal.dot(normal) > 0.0;
@@ -284,13 +287,15 @@ const char* CityJsonName(SurfaceClass type) {
 
 CityModel BuildCityModel(const PolygonMesh& mesh,
                          std::span<const Plane3> planes,
+                         const Vec3& up,
                          const std::string& file) {
   CheckFaces(mesh, file);
+  const Vec3 unit_up = up.normalized();
   CityModel model;
   for (const std::uint32_t v : mesh.face_indices) model.box.Extend(mesh.vertices[v]);
   const double tolerance = kOnPlaneRelative * model.box.Extent().norm();
   for (const auto& faces : FacesOfParts(mesh)) {
-    model.buildings.push_back(BuildBuilding(mesh, faces, planes, model.box));
+    model.buildings.push_back(BuildBuilding(mesh, faces, planes, unit_up, model.box));
     DropStraightRingPoints(mesh, tolerance, model.buildings.back());
   }
   return model;

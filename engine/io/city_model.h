@@ -48,13 +48,14 @@ struct CityModel {
 /// coordinates): one per connected part (faces sharing vertices); a face lies on a plane of
 /// `planes` when the normals agree within 0.5 degrees and every vertex is within 1e-7 of the
 /// mesh's bounding-box diagonal; a face is a wall when its normal is within 10 degrees of
-/// horizontal (z is up), else a roof or ground (floor or ceiling inside). Faces of one plane,
+/// vertical (`up` is up; not zero), else a roof or ground (floor or ceiling inside). Faces of one plane,
 /// class and orientation are joined by JoinIntoPlanarPolygons; faces on no plane stay as they
 /// are.
 /// @throws LinesurfException kInvalidInput naming `file` on a face with fewer than 3 vertices,
 /// an index out of range or a non-finite coordinate.
 [[nodiscard]] CityModel BuildCityModel(const PolygonMesh& mesh,
                                        std::span<const Plane3> planes,
+                                       const Vec3& up,
                                        const std::string& file);
 
 }  // namespace linesurf::io

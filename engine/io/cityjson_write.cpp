@@ -1,6 +1,7 @@
 #include "engine/io/cityjson_write.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/public_vector.h"
 #include "engine/io/city_model.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
@@ -209,7 +210,7 @@ std::string CityJsonText(const PolygonMesh& mesh,
                          std::span<const Plane3> planes,
                          const GeoreferenceOptions& options,
                          const std::string& file) {
-  const CityModel model = BuildCityModel(mesh, planes, file);
+  const CityModel model = BuildCityModel(mesh, planes, ToVec3(options.up), file);
   const Quantisation quantisation(model.box);
   std::string out = "{" + HeaderMembers(model, quantisation, options) + ",\n\"CityObjects\":{";
   VertexNumbering numbering;
@@ -233,7 +234,7 @@ std::string CityJsonSeqText(const PolygonMesh& mesh,
                             std::span<const Plane3> planes,
                             const GeoreferenceOptions& options,
                             const std::string& file) {
-  const CityModel model = BuildCityModel(mesh, planes, file);
+  const CityModel model = BuildCityModel(mesh, planes, ToVec3(options.up), file);
   const Quantisation quantisation(model.box);
   std::string out =
       "{" + HeaderMembers(model, quantisation, options) + ",\"CityObjects\":{},\"vertices\":[]}\n";

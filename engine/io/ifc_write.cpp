@@ -1,6 +1,7 @@
 #include "engine/io/ifc_write.h"
 
 #include "engine/core/exception.h"
+#include "engine/core/public_vector.h"
 #include "engine/io/city_model.h"
 #include "engine/io/file_access.h"
 #include "engine/io/mesh_format.h"
@@ -141,7 +142,7 @@ std::string IfcText(const PolygonMesh& mesh,
                     std::span<const Plane3> planes,
                     const GeoreferenceOptions& options,
                     const std::string& file) {
-  const CityModel model = BuildCityModel(mesh, planes, file);
+  const CityModel model = BuildCityModel(mesh, planes, ToVec3(options.up), file);
   // The site sits at the minimum corner in whole metres: local coordinates stay small.
   const Vec3 origin = model.box.IsEmpty() ? Vec3(Vec3::Zero()) : Vec3(model.box.min.array().floor());
   StepData data;

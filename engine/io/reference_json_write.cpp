@@ -78,7 +78,7 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
                     kReferenceJsonWriteStage,
                     path << ": scene has " << scene.residuals.size() << " residuals for "
                          << scene.observations.NumItems() << " observations");
-  const Vec3& t = scene.world_from_local.translation;
+  const Rigid3& t = scene.world_from_local;
   JsonWriter w(path);
   std::string& out = w.out();
   out.reserve(num_segments * 200 + scene.planes.size() * 120 + 64);
@@ -144,7 +144,7 @@ std::string SerializeScene(const Scene& scene, const std::string& path) {
       out.append(p == 0 ? "\n{\"inlier\": " : ",\n{\"inlier\": ");
       w.AppendList(ToWorldExact(plane.point, t), 3, at + ".inlier");
       out.append(", \"normal\": ");
-      w.AppendList(plane.normal, 3, at + ".normal");
+      w.AppendList(t.Rotate(plane.normal), 3, at + ".normal");
       out.push_back('}');
     }
     out.append(scene.planes.empty() ? "]" : "\n]");

@@ -5,6 +5,7 @@
 #include "engine/core/exception.h"
 
 #include <cctype>
+#include <cmath>
 
 namespace linesurf::io {
 namespace {
@@ -32,6 +33,12 @@ namespace linesurf {
 Status GeoreferenceOptions::Validate() const noexcept {
   return CatchAll("georeference", [&] {
     if (!crs.empty()) static_cast<void>(io::EpsgCode(crs));
+    const double length = std::hypot(up[0], up[1], up[2]);
+    LINESURF_THROW_IF(!std::isfinite(length) || length == 0.0,
+                      kInvalidOptions,
+                      "georeference",
+                      "up = (" << up[0] << ", " << up[1] << ", " << up[2]
+                               << ") is not a direction: it must be finite and not zero");
   });
 }
 

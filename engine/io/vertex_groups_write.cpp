@@ -30,7 +30,7 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
   return CatchAll(kVertexGroupsWriteStage, [&] {
     const std::string file = path.string();
     const std::size_t n = scene.segments.size();
-    const Vec3& t = scene.world_from_local.translation;
+    const Rigid3& frame = scene.world_from_local;
     const bool has_memberships = scene.HasMemberships();
     auto membership = [&](std::size_t i) {
       return has_memberships ? scene.memberships[SegmentId(i)] : PlaneMembership{};
@@ -40,8 +40,8 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
     AppendUnsigned(out, 2 * n);
     out += '\n';
     for (const Segment3& s : scene.segments) {
-      AppendVec(out, s.p1 + t, file);
-      AppendVec(out, s.p2 + t, file);
+      AppendVec(out, frame.Apply(s.p1), file);
+      AppendVec(out, frame.Apply(s.p2), file);
     }
     out += "num_colors: ";
     AppendUnsigned(out, 2 * n);
@@ -53,7 +53,8 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
     std::vector<std::vector<std::size_t>> groups(scene.planes.size());
     for (std::size_t i = 0; i < n; ++i) {
       const PlaneMembership m = membership(i);
-      const Vec3 normal = m.count > 0 ? scene.planes[m.planes[0]].normal : Vec3::Zero();
+      const Vec3 normal =
+          m.count > 0 ? frame.Rotate(scene.planes[m.planes[0]].normal) : Vec3::Zero();
       AppendVec(out, normal, file);
       AppendVec(out, normal, file);
       for (std::uint8_t k = 0; k < m.count; ++k) groups[m.planes[k].index()].push_back(i);
@@ -63,10 +64,11 @@ Status WriteVertexGroups(const Scene& scene, const std::filesystem::path& path) 
     out += '\n';
     for (std::size_t g = 0; g < groups.size(); ++g) {
       const Plane3& plane = scene.planes[PlaneId(g)];
-      const double d = -plane.normal.dot(plane.point + t);
+      const Vec3 normal = frame.Rotate(plane.normal);
+      const double d = -normal.dot(frame.Apply(plane.point));
       out += "group_type: 0\nnum_group_parameters: 4\ngroup_parameters: ";
       for (int k = 0; k < 3; ++k) {
-        AppendDouble(out, plane.normal[k]);
+        AppendDouble(out, normal[k]);
         out += ' ';
       }
       AppendDouble(out, d);

@@ -28,6 +28,7 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(
     out.scene = std::move(sane.scene);
     out.input_segment = std::move(sane.input_segment);
     out.sanitize_stats = sane.stats;
+    out.frame = std::move(sane.frame);
     out.warnings = std::move(sane.warnings);
     ctx.ThrowIfCancelled(kDetectScenePlanesStage);
 

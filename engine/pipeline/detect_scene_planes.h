@@ -24,6 +24,8 @@ struct DetectedScene {
   /// Per segment of `scene`, its id in the input scene.
   IdVector<SegmentId, SegmentId> input_segment;
   SanitizeStats sanitize_stats;
+  /// The data's frame sanitation turned the scene into (SanitizeResult::frame).
+  DataFrame frame;
   /// Sanitation's warnings, one sentence each.
   std::vector<std::string> warnings;
   /// The detection's numbers and per-plane support (its planes and memberships are in `scene`).

@@ -66,6 +66,7 @@ struct ScenePlanes {
   IdVector<SegmentId, SegmentId> input_segment;
   std::vector<std::string> warnings;
   SanitizeStats sanitation;
+  DataFrame frame;
   DetectionStats detection;
   std::string plane_cap_warning;   ///< "" unless a detection block stopped at max_planes
   double detection_epsilon = 0.0;  ///< eps used by detection (0: given planes)
@@ -91,6 +92,7 @@ ScenePlanes GivenPlanes(const Scene& input,
   out.input_segment = std::move(sane.input_segment);
   out.warnings = std::move(sane.warnings);
   out.sanitation = sane.stats;
+  out.frame = std::move(sane.frame);
   return out;
 }
 
@@ -111,6 +113,7 @@ ScenePlanes DetectedPlanes(const Scene& input,
   out.input_segment = std::move(detected.input_segment);
   out.warnings = std::move(detected.warnings);
   out.sanitation = detected.sanitize_stats;
+  out.frame = std::move(detected.frame);
   return out;
 }
 
@@ -221,6 +224,8 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     facts.interior =
         facts.auto_mode ? facts.decision.interior : options.scene_mode == SceneMode::kInterior;
     stats.scene = MakeSceneModeStats(facts);
+    if (facts.interior) OrientUpInside(scene, planes.frame);
+    stats.frame = MakeFrameStats(planes.frame);
 
     facts.planes = scene.planes.size();
     facts.planes_in_complex = stats.complex.planes_in_complex;
@@ -379,7 +384,10 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
 
     // Planes back to world coordinates.
     result.planes = scene.planes;
-    for (Plane3& p : result.planes) p.point = scene.world_from_local.Apply(p.point);
+    for (Plane3& p : result.planes) {
+      p.point = scene.world_from_local.Apply(p.point);
+      p.normal = scene.world_from_local.Rotate(p.normal);
+    }
     result.memberships = scene.memberships;
     result.input_segment = prepared.input_segment;
 

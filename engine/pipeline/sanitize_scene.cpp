@@ -277,7 +277,27 @@ void Recentre(const Vec3& centre, Scene& out) {
   }
   for (Vec3& v : out.viewpoints) v -= centre;
   for (Plane3& plane : out.planes) plane.point -= centre;
-  out.world_from_local.translation += centre;
+  out.world_from_local.translation += out.world_from_local.Rotate(centre);
+}
+
+/// Turns the scene into `axes` (columns: the frame's axes in the current coordinates), then
+/// recentres it on the centre of its segments' box in that frame.
+void TurnToFrame(const Eigen::Matrix3d& axes, Scene& out) {
+  const Eigen::Matrix3d local_from_current = axes.transpose();
+  Box3 box;
+  for (Segment3& seg : out.segments) {
+    seg.p1 = local_from_current * seg.p1;
+    seg.p2 = local_from_current * seg.p2;
+    box.Extend(seg.p1);
+    box.Extend(seg.p2);
+  }
+  for (Vec3& v : out.viewpoints) v = local_from_current * v;
+  for (Plane3& plane : out.planes) {
+    plane.point = local_from_current * plane.point;
+    plane.normal = (local_from_current * plane.normal).normalized();
+  }
+  out.world_from_local.rotation = out.world_from_local.rotation * axes;
+  Recentre(box.Center(), out);
 }
 
 }  // namespace
@@ -323,7 +343,13 @@ Expected<SanitizeResult> SanitizeScene(Scene in, const SanitizeOptions& options)
 
     out.world_from_local = in.world_from_local;
     out.extra_fields = std::move(in.extra_fields);
-    if (options.recentre) Recentre(kept_box.Center(), out);
+    if (options.recentre) {
+      Recentre(kept_box.Center(), out);
+      if (options.align_to_data_frame) {
+        result.frame = EstimateDataFrame(out);
+        if (result.frame.found) TurnToFrame(result.frame.axes, out);
+      }
+    }
     return result;
   });
 }

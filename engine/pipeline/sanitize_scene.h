@@ -10,6 +10,7 @@
 #include "linesurf/error.h"
 #include "engine/core/coordinate_bound.h"
 #include "engine/core/scene.h"
+#include "engine/pipeline/data_frame.h"
 
 namespace linesurf::pipeline {
 
@@ -34,6 +35,11 @@ struct SanitizeOptions {
   /// record the translation in Scene::world_from_local. Default true (always wanted, except by
   /// tests that check the other repairs in isolation).
   bool recentre = true;
+  /// With recentre: also turn the scene into its data's frame (EstimateDataFrame), recorded in
+  /// Scene::world_from_local.rotation, so that the reconstruction does not depend on the frame
+  /// of the input. Default true; false keeps the input's axes (conversions, which must not
+  /// touch coordinates beyond the translation).
+  bool align_to_data_frame = true;
 
   /// Checks every field against its documented range; the error names the first bad field.
   [[nodiscard]] Status Validate() const;
@@ -58,7 +64,7 @@ struct SanitizeStats {
 };
 
 struct SanitizeResult {
-  /// The repaired scene, in the local frame (world = local + world_from_local.translation).
+  /// The repaired scene, in the local frame (world = world_from_local.Apply(local)).
   Scene scene;
   SanitizeStats stats;
   /// Per kept segment, its id in the input scene (ascending).
@@ -66,6 +72,8 @@ struct SanitizeResult {
   /// One sentence per non-zero repair counter, e.g. "412 segments dropped: zero or near-zero
   /// length (< 6.6e-06)".
   std::vector<std::string> warnings;
+  /// The data's frame, in the input's axes (found false when not aligned).
+  DataFrame frame;
 };
 
 /// @brief Drops or fixes every bad element of `scene` and recentres it (docs/user/formats.md lists the

@@ -22,6 +22,19 @@ std::array<std::size_t, 3> SegmentsWithPlanes(const Scene& scene) {
 
 }  // namespace
 
+FrameStats MakeFrameStats(const DataFrame& frame) {
+  FrameStats s;
+  s.aligned = frame.found;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int k = 0; k < 3; ++k) s.axes[axis][k] = frame.axes(k, axis);
+  }
+  for (int k = 0; k < 3; ++k) s.up[k] = frame.up[k];
+  s.up_evidence = UpEvidenceName(frame.up_evidence);
+  s.up_sign = frame.up_sign_reason;
+  s.axis_share = frame.axis_share;
+  return s;
+}
+
 InputStats MakeInputStats(const SanitizeStats& sanitation, const Scene& scene) {
   return {.input_segments = sanitation.input_segments,
           .segments = scene.NumSegments(),

@@ -27,6 +27,9 @@
 namespace linesurf::pipeline {
 
 /// The segments sanitation read, and what the sanitised scene (with its planes) holds.
+/// The frame of the run, in the input's axes.
+[[nodiscard]] FrameStats MakeFrameStats(const DataFrame& frame);
+
 [[nodiscard]] InputStats MakeInputStats(const SanitizeStats& sanitation, const Scene& scene);
 
 /// Detected planes: the planes and memberships of the detected scene, its capped blocks, cube

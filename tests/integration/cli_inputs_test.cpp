@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -229,6 +230,48 @@ TEST_F(CliInputs, ReconstructWritesCityJson) {
   EXPECT_EQ(parsed[0]["type"], "CityJSON");
   EXPECT_EQ(parsed[1]["type"], "CityJSONFeature");
   EXPECT_EQ(parsed[1]["CityObjects"]["building_0"], city["CityObjects"]["building_0"]);
+}
+
+/// Per semantic class, the number of surfaces of the first building.
+std::map<std::string, int> SurfaceClasses(const nlohmann::json& city) {
+  std::map<std::string, int> count;
+  for (const auto& s : city["CityObjects"]["building_0"]["geometry"][0]["semantics"]["surfaces"]) {
+    ++count[s["type"].get<std::string>()];
+  }
+  return count;
+}
+
+// A house and a room turned so that their up is not z: roofs, walls and ground (floors and
+// ceilings inside) by the data's up, which the report names.
+TEST_F(CliInputs, CityJsonClassifiesByTheDatasUp) {
+  const auto json = [&](const std::string& file) {
+    return nlohmann::json::parse(Slurp(dir_ / file));
+  };
+  for (const std::string family : {"house", "room"}) {
+    SCOPED_TRACE(family);
+    std::map<std::string, int> given;
+    for (const std::string turn : {"", " --rotate 1,2,3,70"}) {
+      const std::string name = family + (turn.empty() ? "_given" : "_turned");
+      const CliRunResult synth =
+          Run("synth " + family + " --seed 3 --noise 0.002" + turn + " -o " + Quote(dir_ / name));
+      ASSERT_EQ(synth.exit_code, 0) << synth.err;
+      const CliRunResult r = Run("reconstruct " + Quote(dir_ / name / "lines.json") + " -o " +
+                                 Quote(dir_ / (name + ".city.json")) + " --report " +
+                                 Quote(dir_ / (name + ".report.json")));
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      const std::map<std::string, int> classes = SurfaceClasses(json(name + ".city.json"));
+      EXPECT_EQ(classes.size(), 3u);
+      if (turn.empty()) given = classes;
+      EXPECT_EQ(classes, given);
+      const nlohmann::json up = json(name + "/meta.json")["up"];
+      const nlohmann::json frame = json(name + ".report.json")["frame"];
+      EXPECT_TRUE(frame["aligned"].get<bool>());
+      EXPECT_EQ(frame["up_evidence"], "viewpoint_spread");
+      double dot = 0.0;
+      for (int k = 0; k < 3; ++k) dot += frame["up"][k].get<double>() * up[k].get<double>();
+      EXPECT_GT(dot, 0.9999);
+    }
+  }
 }
 
 }  // namespace

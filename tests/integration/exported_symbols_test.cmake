@@ -1,4 +1,4 @@
-# The shared library exports the facade only: every defined dynamic symbol is in linesurf::v2
+# The shared library exports the facade only: every defined dynamic symbol is in linesurf::v3
 # (functions, type info, vtables) or a C API function linesurf_*. Run by CTest with -DLIBRARY=
 # -DNM=.
 execute_process(COMMAND ${NM} -D --defined-only --demangle ${LIBRARY} OUTPUT_VARIABLE symbols
@@ -16,7 +16,7 @@ foreach(line ${lines})
   endif()
   set(name "${CMAKE_MATCH_1}")
   math(EXPR count "${count} + 1")
-  if(NOT name MATCHES "^(linesurf_|((typeinfo for |typeinfo name for |vtable for )?linesurf::v2::))")
+  if(NOT name MATCHES "^(linesurf_|((typeinfo for |typeinfo name for |vtable for )?linesurf::v3::))")
     string(APPEND bad "  ${name}\n")
   endif()
 endforeach()
@@ -26,4 +26,4 @@ endif()
 if(count LESS 20)
   message(FATAL_ERROR "only ${count} symbols exported by ${LIBRARY}: the facade is missing")
 endif()
-message(STATUS "${count} exported symbols, all linesurf::v2 or linesurf_*")
+message(STATUS "${count} exported symbols, all linesurf::v3 or linesurf_*")

@@ -1,5 +1,5 @@
 # The installed package for C++ and C hosts: installs linesurf into a fresh prefix, builds the
-# out-of-tree hosts docs/examples/host_cpp and host_c against it with find_package(linesurf 2),
+# out-of-tree hosts docs/examples/host_cpp and host_c against it with find_package(linesurf 3),
 # runs them on the bundled house and checks their meshes are byte for byte the CLI's.
 # Run by CTest (tests/integration/CMakeLists.txt) with -DBUILD_DIR= -DSOURCE_DIR= -DCLI= -DWORK=
 # -DCXX= -DCC= -DCC_ID= (CMAKE_C_COMPILER_ID) -DPKG_CONFIG= (may be empty) -DSANITIZE=

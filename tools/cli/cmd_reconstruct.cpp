@@ -71,7 +71,8 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
   // The format follows the destination's name: the staged file keeps only its last extension.
   auto write_surface = [&](const std::filesystem::path& path) {
-    const GeoreferenceOptions& geo = args.georeference;
+    GeoreferenceOptions geo = args.georeference;
+    geo.up = result->stats.frame.up;  // roof, wall and ground by the data's up
     if (sequence) return WriteCityJsonSeq(path.string(), result->mesh, result->planes, geo);
     if (cityjson) return WriteCityJson(path.string(), result->mesh, result->planes, geo);
     if (ifc) return WriteIfc(path.string(), result->mesh, result->planes, geo);

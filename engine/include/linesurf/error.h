@@ -7,7 +7,7 @@
 #include <variant>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// What went wrong, coarsely; hosts switch on it, people read Error::message.
 enum class ErrorCode {
@@ -93,5 +93,5 @@ class [[nodiscard]] Expected<void> {
 
 using Status = Expected<void>;
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

@@ -14,7 +14,7 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 struct EvaluationOptions {
   /// Distance thresholds (mesh units, metres for synthetic scenes); each > 0, increasing.
@@ -59,5 +59,5 @@ struct EvaluationResult {
   MeshValidity topology;  ///< of the result
 };
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

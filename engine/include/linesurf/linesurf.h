@@ -37,7 +37,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// @brief The whole method: sanitise, planes (detected or given), cell complex, evidence, LP
 /// labelling, surface extraction.
@@ -220,5 +220,5 @@ class LINESURF_API Reconstruction {
 /// True for a name ending in ".jsonl" (case-insensitive, e.g. ".city.jsonl"): CityJSONSeq by name.
 [[nodiscard]] LINESURF_API bool IsCityJsonSeqPath(const std::string& path) noexcept;
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

@@ -64,7 +64,7 @@ typedef struct linesurf_callbacks {
   void* user_data;
 } linesurf_callbacks;
 
-/* The library version, e.g. "2.0.0". */
+/* The library version, e.g. "3.0.0". */
 LINESURF_API const char* linesurf_version(void);
 /* "ok", "invalid_options", "invalid_input", ...; "unknown" for an int that is no linesurf_status
  * (an int, not the enum, because such a value held in the enum type is undefined in C++). */

@@ -21,7 +21,7 @@
 #include <utility>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// The values a numeric option accepts; a NaN or an infinity is refused whatever the range.
 struct OptionRange {
@@ -357,5 +357,5 @@ template <typename Options>
   return first;
 }
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

@@ -7,13 +7,14 @@
 #include "linesurf/error.h"
 #include "linesurf/export.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// Largest num_threads accepted (the CLI's -j bound too).
 inline constexpr int kMaxThreads = 256;
@@ -252,6 +253,10 @@ struct GeoreferenceOptions {
   /// Coordinate reference system of the mesh's coordinates, "EPSG:CODE" (e.g. "EPSG:7415"),
   /// written as CityJSON metadata.referenceSystem and as IFC IfcProjectedCRS; empty: none stated.
   std::string crs;
+  /// The up direction of the mesh's coordinates (finite, not zero; need not be unit): faces
+  /// within 10 degrees of vertical are walls, the others roofs or ground (floors or ceilings
+  /// inside). `linesurf reconstruct` passes the run's own (ReconstructStats::frame.up).
+  std::array<double, 3> up{0.0, 0.0, 1.0};
 
   [[nodiscard]] LINESURF_API Status Validate() const noexcept;
 };
@@ -367,5 +372,5 @@ template <typename E>
   return OptionEnumFromName<ComplexEngine>(name);
 }
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

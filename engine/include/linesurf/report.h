@@ -12,7 +12,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// stats_version (the stats' layout_version), options (by path, nested), then each stage struct
 /// of the stats under the keys of linesurf 1's report: counts, block and scene decisions, eps,
@@ -28,5 +28,5 @@ inline namespace v2 {
 /// The figures without ground truth; components beyond the first 200 are counted, not listed.
 [[nodiscard]] LINESURF_API std::string ReportJson(const SurfaceQuality& quality);
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

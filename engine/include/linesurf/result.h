@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// Numbers of a reconstruction, one struct per stage (stats.h; docs/design/reconstruction.md
 /// explains each, docs/design/options_and_reports.md how the layout grows). The engine fills this
@@ -33,6 +33,7 @@ struct ReconstructStats {
   FragmentStats fragments;
   QualityStats quality;
   ResourceStats resources;
+  FrameStats frame;
 };
 
 /// What a mesh is as the boundary of solids: the classes of ISO 19107 / val3dity that GIS and
@@ -170,5 +171,5 @@ struct ReadSceneResult {
   std::vector<std::string> warnings;
 };
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

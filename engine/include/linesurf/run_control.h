@@ -9,7 +9,7 @@
 #include <string>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 enum class LogLevel { kDebug, kInfo, kWarning, kError };
 
@@ -44,5 +44,5 @@ struct RunControl {
   LogSink* log = nullptr;
 };
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf

@@ -14,12 +14,12 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// The version of the layout of ReconstructStats below. It moves with every change of the
 /// layout (a field added at the end of a stage struct, a stage added at the end), and the
 /// library's SOVERSION moves with it. 1 was the flat layout of linesurf 1.
-inline constexpr int kStatsLayoutVersion = 2;
+inline constexpr int kStatsLayoutVersion = 3;
 
 /// Where the inlier tolerance eps of a run came from (docs/design/plane_detection.md, eps auto).
 struct EpsilonEstimate {
@@ -198,5 +198,27 @@ struct ResourceStats {
   std::size_t peak_memory_bytes = 0;  ///< process peak RSS at the end of the run
 };
 
-}  // namespace v2
+/// The frame the run worked in (report: `frame`; docs/design/real_data.md, "The frame"). The
+/// reconstruction turns the scene into its data's own axes, so that its box and block grids
+/// turn with the scene, and tells the up direction from the viewpoints.
+struct FrameStats {
+  /// The data's axes were found (a dominant line direction and one orthogonal to it) and the
+  /// run worked in them; false: in the input's axes.
+  bool aligned = false;
+  /// The working frame's x, y and z axes as unit vectors in the input's coordinates (z is up).
+  std::array<std::array<double, 3>, 3> axes{{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}}};
+  /// The up direction in the input's coordinates (the CityJSON and IFC writers classify roof,
+  /// wall and ground by it).
+  std::array<double, 3> up{0.0, 0.0, 1.0};
+  /// How the up axis was told: "viewpoint_spread" (the axis along which the viewpoints spread
+  /// least), "line_spread" (of two such axes, the one the lines span more), "input_z" (no
+  /// viewpoint: the axis nearest the input's z) or "none" (not aligned).
+  std::string up_evidence = "none";
+  /// Why up points the way it does, one sentence.
+  std::string up_sign;
+  /// Share of the line length within 5 degrees of one of the three axes, [0, 1].
+  double axis_share = 0.0;
+};
+
+}  // namespace v3
 }  // namespace linesurf

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace linesurf {
-inline namespace v2 {
+inline namespace v3 {
 
 /// A point or direction (x, y, z), world coordinates.
 using Vector3 = std::array<double, 3>;
@@ -102,5 +102,5 @@ struct Mesh {
   }
 };
 
-}  // namespace v2
+}  // namespace v3
 }  // namespace linesurf
