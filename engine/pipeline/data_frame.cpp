@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <utility>
@@ -13,7 +14,6 @@
 namespace linesurf::pipeline {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Candidate axes tried for a dominant direction: the directions of the longest segments.
 constexpr std::size_t kCandidateAxes = 256;
 /// Refinement steps of a dominant direction (each the principal axis of the lines near it).
@@ -29,7 +29,8 @@ struct DirectionSample {
 
 std::vector<DirectionSample> SampleDirections(const Scene& scene) {
   const std::size_t n = scene.NumSegments();
-  const std::size_t stride = std::max<std::size_t>(1, (n + kMaxFrameSamples - 1) / kMaxFrameSamples);
+  const std::size_t stride =
+      std::max<std::size_t>(1, (n + kMaxFrameSamples - 1) / kMaxFrameSamples);
   std::vector<DirectionSample> out;
   out.reserve(n / stride + 1);
   for (std::size_t s = 0; s < n; s += stride) {
@@ -113,24 +114,24 @@ std::vector<DirectionSample> OrthogonalSamples(const std::vector<DirectionSample
 
 /// Weighted mean and standard deviation of values along an axis.
 struct Spread {
-  double weight = 0.0;
   double mean = 0.0;
   double deviation = 0.0;
 };
 
-template <typename ForEach>
-Spread SpreadOf(ForEach&& for_each) {
-  Spread s;
+/// The spread of (value, weight) pairs; zeros when no weight.
+Spread SpreadOf(const std::vector<std::pair<double, double>>& values) {
+  double weight = 0.0;
   double sum = 0.0;
+  for (const auto& [value, w] : values) {
+    weight += w;
+    sum += w * value;
+  }
+  Spread s;
+  if (weight <= 0.0) return s;
+  s.mean = sum / weight;
   double sum_sq = 0.0;
-  for_each([&](double value, double weight) {
-    s.weight += weight;
-    sum += weight * value;
-  });
-  if (s.weight <= 0.0) return s;
-  s.mean = sum / s.weight;
-  for_each([&](double value, double weight) { sum_sq += weight * (value - s.mean) * (value - s.mean); });
-  s.deviation = std::sqrt(sum_sq / s.weight);
+  for (const auto& [value, w] : values) sum_sq += w * (value - s.mean) * (value - s.mean);
+  s.deviation = std::sqrt(sum_sq / weight);
   return s;
 }
 
@@ -140,14 +141,6 @@ std::vector<double> ViewpointWeights(const Scene& scene) {
   std::vector<double> weight(scene.viewpoints.size(), 0.0);
   for (const ViewpointId v : scene.observations.items()) weight[v.index()] += 1.0;
   return weight;
-}
-
-Spread ViewpointSpread(const Scene& scene, const std::vector<double>& weight, const Vec3& axis) {
-  return SpreadOf([&](auto&& add) {
-    for (std::size_t v = 0; v < weight.size(); ++v) {
-      if (weight[v] > 0.0) add(scene.viewpoints[ViewpointId(v)].dot(axis), weight[v]);
-    }
-  });
 }
 
 /// Segment endpoints along `axis`, each weighted by half its segment's length.
@@ -160,12 +153,6 @@ std::vector<std::pair<double, double>> EndpointsAlong(const Scene& scene, const 
     out.emplace_back(s.p2.dot(axis), half);
   }
   return out;
-}
-
-Spread LineSpread(const std::vector<std::pair<double, double>>& endpoints) {
-  return SpreadOf([&](auto&& add) {
-    for (const auto& [value, weight] : endpoints) add(value, weight);
-  });
 }
 
 /// The value below which `share` of the weight lies.
@@ -181,30 +168,6 @@ double WeightedQuantile(std::vector<std::pair<double, double>> values, double sh
   return values.empty() ? 0.0 : values.back().first;
 }
 
-/// Which of `axes` is up, and how that was told.
-std::pair<int, UpEvidence> UpAxis(const Scene& scene, const std::array<Vec3, 3>& axes) {
-  const std::vector<double> weight = ViewpointWeights(scene);
-  std::array<double, 3> view{};
-  for (int k = 0; k < 3; ++k) view[k] = ViewpointSpread(scene, weight, axes[k]).deviation;
-  if (ViewpointSpread(scene, weight, axes[0]).weight <= 0.0) {
-    int nearest = 0;
-    for (int k = 1; k < 3; ++k) {
-      if (std::abs(axes[k].z()) > std::abs(axes[nearest].z())) nearest = k;
-    }
-    return {nearest, UpEvidence::kInputZ};
-  }
-  std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return view[a] < view[b]; });
-  if (view[order[1]] > kSpreadRatio * view[order[0]]) {
-    return {order[0], UpEvidence::kViewpointSpread};
-  }
-  // A straight track: the cameras hold one height and one distance from the façades; the
-  // façades rise more than they recede.
-  const double first = LineSpread(EndpointsAlong(scene, axes[order[0]])).deviation;
-  const double second = LineSpread(EndpointsAlong(scene, axes[order[1]])).deviation;
-  return {second > first ? order[1] : order[0], UpEvidence::kLineSpread};
-}
-
 /// Viewpoints along `axis`, each weighted by its observations.
 std::vector<std::pair<double, double>> ViewpointsAlong(const Scene& scene,
                                                        const std::vector<double>& weight,
@@ -214,6 +177,30 @@ std::vector<std::pair<double, double>> ViewpointsAlong(const Scene& scene,
     if (weight[v] > 0.0) out.emplace_back(scene.viewpoints[ViewpointId(v)].dot(axis), weight[v]);
   }
   return out;
+}
+
+/// Which of `axes` is up, and how that was told.
+std::pair<int, UpEvidence> UpAxis(const Scene& scene, const std::array<Vec3, 3>& axes) {
+  const std::vector<double> weight = ViewpointWeights(scene);
+  if (ViewpointsAlong(scene, weight, axes[0]).empty()) {
+    int nearest = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (std::abs(axes[k].z()) > std::abs(axes[nearest].z())) nearest = k;
+    }
+    return {nearest, UpEvidence::kInputZ};
+  }
+  std::array<double, 3> view{};
+  for (int k = 0; k < 3; ++k) view[k] = SpreadOf(ViewpointsAlong(scene, weight, axes[k])).deviation;
+  std::array<int, 3> order{0, 1, 2};
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return view[a] < view[b]; });
+  if (view[order[1]] > kSpreadRatio * view[order[0]]) {
+    return {order[0], UpEvidence::kViewpointSpread};
+  }
+  // A straight track: the cameras hold one height and one distance from the façades; the
+  // façades rise more than they recede.
+  const double first = SpreadOf(EndpointsAlong(scene, axes[order[0]])).deviation;
+  const double second = SpreadOf(EndpointsAlong(scene, axes[order[1]])).deviation;
+  return {second > first ? order[1] : order[0], UpEvidence::kLineSpread};
 }
 
 /// The lines and the viewpoints along an axis.
@@ -258,9 +245,9 @@ std::pair<double, std::string> UpSign(const Scene& scene, const Vec3& axis) {
 /// data; a symmetric scene gets +1).
 double SkewSign(const Scene& scene, const Vec3& axis) {
   const std::vector<std::pair<double, double>> endpoints = EndpointsAlong(scene, axis);
-  const Spread spread = LineSpread(endpoints);
+  const double mean = SpreadOf(endpoints).mean;
   double third = 0.0;
-  for (const auto& [value, weight] : endpoints) third += weight * std::pow(value - spread.mean, 3);
+  for (const auto& [value, weight] : endpoints) third += weight * std::pow(value - mean, 3);
   return third >= 0.0 ? 1.0 : -1.0;
 }
 
@@ -277,7 +264,8 @@ const char* UpEvidenceName(UpEvidence evidence) noexcept {
 }
 
 void OrientUpInside(const Scene& scene, DataFrame& frame) {
-  const std::optional<Heights> h = frame.found ? HeightsAlong(scene, Vec3::UnitZ()) : std::nullopt;
+  const std::optional<Heights> h =
+      frame.found ? HeightsAlong(scene, Vec3::UnitZ()) : std::nullopt;
   if (!h) return;
   // Local +z is frame.axes' z; up is +z or -z of it.
   const double up_sign = frame.up.dot(frame.axes.col(2)) >= 0.0 ? 1.0 : -1.0;
@@ -290,7 +278,7 @@ void OrientUpInside(const Scene& scene, DataFrame& frame) {
 
 DataFrame EstimateDataFrame(const Scene& scene) {
   DataFrame frame;
-  const double tolerance = kAxisToleranceDegrees * kPi / 180.0;
+  const double tolerance = kAxisToleranceDegrees * std::numbers::pi / 180.0;
   const double cos_tol = std::cos(tolerance);
   const std::vector<DirectionSample> samples = SampleDirections(scene);
   const Vec3 first = DominantAxis(samples, cos_tol);
@@ -306,7 +294,8 @@ DataFrame EstimateDataFrame(const Scene& scene) {
   // x: the horizontal axis with more line length along it.
   const int a = (up_index + 1) % 3;
   const int b = (up_index + 2) % 3;
-  const bool a_first = AxisSupport(samples, axes[a], cos_tol) >= AxisSupport(samples, axes[b], cos_tol);
+  const bool a_first =
+      AxisSupport(samples, axes[a], cos_tol) >= AxisSupport(samples, axes[b], cos_tol);
   Vec3 x = axes[a_first ? a : b];
   x *= SkewSign(scene, x);
 
@@ -321,7 +310,8 @@ DataFrame EstimateDataFrame(const Scene& scene) {
   double total = 0.0;
   for (const DirectionSample& s : samples) {
     total += s.length;
-    const double best = std::max({std::abs(s.direction.dot(axes[0])), std::abs(s.direction.dot(axes[1])),
+    const double best = std::max({std::abs(s.direction.dot(axes[0])),
+                                  std::abs(s.direction.dot(axes[1])),
                                   std::abs(s.direction.dot(axes[2]))});
     if (best > cos_tol) near += s.length;
   }
