@@ -13,4 +13,5 @@ $SUDO apt-get install -y --no-install-recommends \
   libgmp-dev libmpfr-dev libgtest-dev libbenchmark-dev \
   libpng-dev libmaxflow-dev \
   clang-14 libfuzzer-14-dev libclang-rt-14-dev \
-  python3-dev python3-numpy pybind11-dev python3-jsonschema
+  python3-dev python3-numpy pybind11-dev python3-jsonschema \
+  python3-distributed python3-mpi4py openmpi-bin

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/api/options_json.h"
+
 namespace linesurf {
 inline namespace v3 {
 namespace {
@@ -18,31 +20,6 @@ using Json = nlohmann::ordered_json;
 
 /// Components beyond this many are counted, not listed.
 constexpr std::size_t kMaxListedComponents = 200;
-
-/// Every option by its path, nested at the dots ({"weights": {"edge": 0.1}}), enums by name,
-/// unset optionals as null.
-template <typename Options>
-Json OptionsJson(const Options& options) {
-  Json j = Json::object();
-  VisitOptions(options, [&j](const OptionSpec& spec, const auto& field) {
-    Json* node = &j;
-    std::string_view rest = spec.path;
-    for (std::size_t dot; (dot = rest.find('.')) != std::string_view::npos;
-         rest.remove_prefix(dot + 1)) {
-      node = &(*node)[std::string(rest.substr(0, dot))];
-    }
-    using T = std::remove_cvref_t<decltype(field)>;
-    Json& value = (*node)[std::string(rest)];
-    if constexpr (std::is_enum_v<T>) {
-      value = OptionEnum<T>::Name(field);
-    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-      value = field ? Json(*field) : Json();
-    } else {
-      value = field;
-    }
-  });
-  return j;
-}
 
 Json EpsilonJson(const EpsilonEstimate& e) {
   return {{"epsilon", e.epsilon},
@@ -260,7 +237,7 @@ std::string ReportJson(const ReconstructResult& result, const ReconstructOptions
   const ReconstructStats& s = result.stats;
   Json j;
   j["stats_version"] = s.layout_version;
-  j["options"] = OptionsJson(options);
+  j["options"] = api::OptionsJson(options);
   j["counts"] = Json::object();
   j["mesh"] = Json::object();
   WriteInputs(s.inputs, j);
@@ -284,7 +261,7 @@ std::string ReportJson(const ReconstructResult& result, const ReconstructOptions
 std::string ReportJson(const DetectResult& result, const DetectOptions& options) {
   const DetectStats& st = result.stats;
   Json j;
-  j["options"] = OptionsJson(options);
+  j["options"] = api::OptionsJson(options);
   j["stats"] = {{"input_segments", st.input_segments},
                 {"segments", st.segments},
                 {"lines", st.lines},

@@ -10,7 +10,6 @@
 #include "engine/core/exception.h"
 #include "engine/core/rng.h"
 #include "engine/detect/detect_stage.h"
-#include "engine/detect/ransac_detector.h"
 
 namespace linesurf::detect {
 namespace {
@@ -48,29 +47,18 @@ bool SplitAtCap(const DetectionBlock& block,
          block.home_segments.size() > lines_for_cap;
 }
 
-/// What every block's run reads.
-struct BlockDetectionInput {
-  std::span<const Segment3> lines;
-  const DetectionLayout& layout;
-  const PlaneDetectionOptions& options;
-  double epsilon;
-  const RunContext& ctx;
-};
-
-/// One block's RANSAC, or its replacement by children when it reached max_planes (SplitAtCap).
-struct BlockRun {
-  DetectionBlock block;
-  double progress_share = 0.0;  ///< of the whole detection, handed on to its children
-  std::vector<SupportedPlane> planes;
-  PlaneDetectionStats stats;
-  std::vector<DetectionBlock> children;  ///< set when the block is split
-  std::vector<std::size_t> child_runs;   ///< indices of the children's runs
-};
-
 /// The finished share of the detection, summed and reported under a lock.
 struct BlockProgress {
   std::mutex mutex;
   double done = 0.0;
+};
+
+/// One block's run: its request and outcome, and its children when it was split.
+struct BlockRun {
+  DetectionBlock block;
+  double progress_share = 0.0;  ///< of the whole detection, handed on to its children
+  DetectionRunOutcome outcome;
+  std::vector<std::size_t> child_runs;  ///< indices of the children's runs
 };
 
 std::size_t AddRun(std::vector<BlockRun>& runs, DetectionBlock block, double progress_share) {
@@ -80,50 +68,66 @@ std::size_t AddRun(std::vector<BlockRun>& runs, DetectionBlock block, double pro
   return runs.size() - 1;
 }
 
-/// Runs the RANSAC of run `r`: keeps its planes (inliers as scene ids), or its children when it
-/// reached max_planes and SplitAtCap allows.
-void RunBlock(const BlockDetectionInput& in,
-              std::size_t r,
-              BlockRun& run,
-              BlockProgress& progress) {
-  const std::vector<SegmentId>& ids = run.block.segments;
-  // A single block holds every line in order: it works on `lines` itself, without a copy.
-  const bool single = in.layout.blocks.size() == 1 && r == 0;
-  // Without a grid nothing splits: the RANSAC's own progress (planes / max_planes) is the
-  // detection's.
-  const bool plane_progress = !in.layout.grid.has_value();
-  std::vector<Segment3> local;
-  if (!single) {
-    local.reserve(ids.size());
-    for (const SegmentId id : ids) local.push_back(in.lines[id.index()]);
+/// The requests of the runs of `round`: a single block keeps options.seed, so it reproduces the
+/// monolithic method exactly; run r of several draws from its own stream.
+std::vector<DetectionRunRequest> RoundRequests(const std::vector<std::size_t>& round,
+                                               const std::vector<BlockRun>& runs,
+                                               const DetectionLayout& layout,
+                                               const PlaneDetectionOptions& options) {
+  std::vector<DetectionRunRequest> requests;
+  requests.reserve(round.size());
+  for (const std::size_t r : round) {
+    const bool single = layout.blocks.size() == 1 && r == 0;
+    requests.push_back(DetectionRunRequest{
+        .block = &runs[r].block,
+        .run = r,
+        .seed = single ? options.seed : MixSeed(options.seed, RngStage::kDetect, kBlockStream, r),
+        .may_split = SplitAtCap(runs[r].block, layout, options),
+        .report_progress = !layout.grid.has_value()});
   }
-  const std::uint64_t seed =
-      single ? in.options.seed : MixSeed(in.options.seed, RngStage::kDetect, kBlockStream, r);
-  const RansacInput ransac{
-      single ? in.lines : std::span<const Segment3>(local), in.options, in.epsilon};
-  RansacDetector detector(ransac, seed, plane_progress, in.ctx);
-  detector.ExtractAll(run.stats);
-  if (run.stats.capped_blocks > 0 && SplitAtCap(run.block, in.layout, in.options)) {
-    run.children =
-        SplitDetectionBlock(in.lines, *in.layout.grid, run.block, in.options.block_halo);
-    run.stats.capped_blocks = 0;
-    return;
-  }
-  run.planes = std::move(detector.planes());
-  for (SupportedPlane& plane : run.planes) {
-    for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
-  }
-  const std::lock_guard lock(progress.mutex);
-  progress.done += run.progress_share;
-  in.ctx.ReportProgress(kDetectPlanesStage, std::min(progress.done, 1.0));
+  return requests;
 }
 
-/// Adds the runs of the children of the runs of `round`, in order; returns them.
-std::vector<std::size_t> NextRound(const std::vector<std::size_t>& round,
+/// The outcomes of `requests` in this process: blocks in parallel, progress per finished block.
+std::vector<DetectionRunOutcome> RunRoundHere(std::span<const Segment3> lines,
+                                              std::span<const DetectionRunRequest> requests,
+                                              const std::vector<BlockRun>& runs,
+                                              const PlaneDetectionOptions& options,
+                                              double epsilon,
+                                              const RunContext& ctx,
+                                              BlockProgress& progress) {
+  std::vector<DetectionRunOutcome> outcomes(requests.size());
+  tbb::parallel_for(std::size_t{0}, requests.size(), [&](std::size_t i) {
+    const DetectionRunRequest& request = requests[i];
+    const std::vector<SegmentId>& ids = request.block->segments;
+    // A single block holds every line in order: it works on `lines` itself, without a copy.
+    const bool whole = ids.size() == lines.size();
+    std::vector<Segment3> local;
+    if (!whole) {
+      local.reserve(ids.size());
+      for (const SegmentId id : ids) local.push_back(lines[id.index()]);
+    }
+    outcomes[i] = RunDetectionBlock(whole ? lines : std::span<const Segment3>(local), request,
+                                    options, epsilon, ctx);
+    if (outcomes[i].split) return;
+    const std::lock_guard lock(progress.mutex);
+    progress.done += runs[request.run].progress_share;
+    ctx.ReportProgress(kDetectPlanesStage, std::min(progress.done, 1.0));
+  });
+  return outcomes;
+}
+
+/// Adds the runs of the children of the split runs of `round`, in order; returns them.
+std::vector<std::size_t> NextRound(std::span<const Segment3> lines,
+                                   const DetectionLayout& layout,
+                                   const PlaneDetectionOptions& options,
+                                   const std::vector<std::size_t>& round,
                                    std::vector<BlockRun>& runs) {
   std::vector<std::size_t> next;
   for (const std::size_t r : round) {
-    std::vector<DetectionBlock> children = std::move(runs[r].children);
+    if (!runs[r].outcome.split) continue;
+    std::vector<DetectionBlock> children =
+        SplitDetectionBlock(lines, *layout.grid, runs[r].block, options.block_halo);
     const double share = runs[r].progress_share / static_cast<double>(children.size());
     for (DetectionBlock& child : children) {
       const std::size_t c = AddRun(runs, std::move(child), share);
@@ -134,20 +138,24 @@ std::vector<std::size_t> NextRound(const std::vector<std::size_t>& round,
   return next;
 }
 
-/// Appends the planes of run `r` (or, when it was split, of its children in order) to `planes`
-/// and adds its counts to `stats`.
+/// Appends the planes of run `r` (or, when it was split, of its children in order) to `planes`,
+/// inliers as scene ids, and adds its counts to `stats`.
 void CollectRun(std::vector<BlockRun>& runs,
                 std::size_t r,
                 std::vector<SupportedPlane>& planes,
                 PlaneDetectionStats& stats) {
   BlockRun& run = runs[r];
-  stats.candidates_evaluated += run.stats.candidates_evaluated;
-  stats.failed_draws += run.stats.failed_draws;
+  stats.candidates_evaluated += run.outcome.candidates_evaluated;
+  stats.failed_draws += run.outcome.failed_draws;
   for (const std::size_t child : run.child_runs) CollectRun(runs, child, planes, stats);
-  if (!run.child_runs.empty()) return;
+  if (run.outcome.split) return;
   ++stats.blocks;
-  stats.capped_blocks += run.stats.capped_blocks;
-  for (SupportedPlane& plane : run.planes) planes.push_back(std::move(plane));
+  if (run.outcome.capped) ++stats.capped_blocks;
+  const std::vector<SegmentId>& ids = run.block.segments;
+  for (SupportedPlane& plane : run.outcome.planes) {
+    for (SegmentId& s : plane.inliers) s = ids[s.index()];  // ascending stays ascending
+    planes.push_back(std::move(plane));
+  }
 }
 }  // namespace
 
@@ -176,8 +184,8 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
                                            const PlaneDetectionOptions& options,
                                            double epsilon,
                                            const RunContext& ctx,
-                                           PlaneDetectionStats& stats) {
-  const BlockDetectionInput in{lines, layout, options, epsilon, ctx};
+                                           PlaneDetectionStats& stats,
+                                           DetectionRunner* runner) {
   std::vector<BlockRun> runs;
   std::vector<std::size_t> round;
   for (const DetectionBlock& block : layout.blocks) {
@@ -185,10 +193,15 @@ std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
   }
   BlockProgress progress;
   while (!round.empty()) {
-    tbb::parallel_for(std::size_t{0}, round.size(), [&](std::size_t i) {
-      RunBlock(in, round[i], runs[round[i]], progress);
-    });
-    round = NextRound(round, runs);
+    const std::vector<DetectionRunRequest> requests = RoundRequests(round, runs, layout, options);
+    std::vector<DetectionRunOutcome> outcomes =
+        runner != nullptr ? runner->RunRound(lines, requests, options, epsilon, ctx)
+                          : RunRoundHere(lines, requests, runs, options, epsilon, ctx, progress);
+    LINESURF_THROW_IF(outcomes.size() != requests.size(), kInternal, kDetectPlanesStage,
+                      "a detection round gave " << outcomes.size() << " outcomes for "
+                                                << requests.size() << " runs");
+    for (std::size_t i = 0; i < round.size(); ++i) runs[round[i]].outcome = std::move(outcomes[i]);
+    round = NextRound(lines, layout, options, round, runs);
   }
   std::vector<SupportedPlane> planes;
   for (std::size_t r = 0; r < layout.blocks.size(); ++r) CollectRun(runs, r, planes, stats);

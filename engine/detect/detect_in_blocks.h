@@ -11,6 +11,7 @@
 #include "engine/core/run_context.h"
 #include "engine/detect/detect_planes.h"
 #include "engine/detect/detection_blocks.h"
+#include "engine/detect/detection_run.h"
 #include "engine/detect/plane_fusion.h"
 #include "partition/voxel/block_grid.h"
 
@@ -31,11 +32,13 @@ DetectionLayout SplitIntoBlocks(std::span<const Segment3> lines,
 /// replaced by its children (SplitAtCap), run in the next round; they take its place in the
 /// order. A single block keeps options.seed, so it reproduces the monolithic method exactly; the
 /// run r of several (blocks first, then children in order of creation) draws from its own stream.
+/// The rounds run in this process, or through `runner` when given (same planes).
 std::vector<SupportedPlane> DetectInBlocks(std::span<const Segment3> lines,
                                            const DetectionLayout& layout,
                                            const PlaneDetectionOptions& options,
                                            double epsilon,
                                            const RunContext& ctx,
-                                           PlaneDetectionStats& stats);
+                                           PlaneDetectionStats& stats,
+                                           DetectionRunner* runner = nullptr);
 
 }  // namespace linesurf::detect

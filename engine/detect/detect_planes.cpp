@@ -161,7 +161,8 @@ std::string PlaneCapWarning(const PlaneDetectionStats& stats, std::int32_t max_p
 
 Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
                                             const PlaneDetectionOptions& options,
-                                            const RunContext& ctx) noexcept {
+                                            const RunContext& ctx,
+                                            detect::DetectionRunner* runner) noexcept {
   if (Status valid = options.Validate(); !valid) return valid.error();
   return CatchAll(kDetectPlanesStage, [&]() -> PlaneDetectionResult {
     const auto start = std::chrono::steady_clock::now();
@@ -184,7 +185,7 @@ Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
     const detect::DetectionLayout layout = detect::SplitIntoBlocks(lines, options);
     std::vector<detect::SupportedPlane> planes;
     RunInArena(ctx, [&] {
-      planes = detect::DetectInBlocks(lines, layout, options, epsilon, ctx, result.stats);
+      planes = detect::DetectInBlocks(lines, layout, options, epsilon, ctx, result.stats, runner);
     });
     result.stats.planes_before_fusion = static_cast<std::int32_t>(planes.size());
     const auto fusion_start = std::chrono::steady_clock::now();

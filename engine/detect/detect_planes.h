@@ -120,11 +120,18 @@ struct PlaneDetectionResult {
 /// none did): planes may be missing.
 [[nodiscard]] std::string PlaneCapWarning(const PlaneDetectionStats& stats, std::int32_t max_planes);
 
+namespace detect {
+class DetectionRunner;
+}
+
 /// Detects planes in `scene.segments` (given planes and memberships are ignored).
 /// Deterministic: the result depends on the input, options and seed, not on the thread count
-/// (`ctx.num_threads`). Cancellable through `ctx`.
-[[nodiscard]] Expected<PlaneDetectionResult> DetectPlanes(const Scene& scene,
-                                                          const PlaneDetectionOptions& options,
-                                                          const RunContext& ctx) noexcept;
+/// (`ctx.num_threads`). Cancellable through `ctx`. The per-block RANSAC runs in this process, or
+/// through `runner` when given (detect/detection_run.h: the same planes).
+[[nodiscard]] Expected<PlaneDetectionResult> DetectPlanes(
+    const Scene& scene,
+    const PlaneDetectionOptions& options,
+    const RunContext& ctx,
+    detect::DetectionRunner* runner = nullptr) noexcept;
 
 }  // namespace linesurf

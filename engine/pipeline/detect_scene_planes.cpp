@@ -17,7 +17,8 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(
     const PlaneDetectionOptions& detect,
     const RunContext& ctx,
     StageTimer* timer,
-    const partition::BlockSizeRule* auto_blocks) noexcept {
+    const partition::BlockSizeRule* auto_blocks,
+    detect::DetectionRunner* runner) noexcept {
   return CatchAll(kDetectScenePlanesStage, [&]() -> DetectedScene {
     DetectedScene out;
     if (timer != nullptr) timer->Start("sanitize");
@@ -51,7 +52,7 @@ Expected<DetectedScene> SanitizeAndDetectPlanes(
       }
     }
     out.detection_block_size = options.block_size;
-    PlaneDetectionResult detected = ValueOrThrow(DetectPlanes(out.scene, options, ctx));
+    PlaneDetectionResult detected = ValueOrThrow(DetectPlanes(out.scene, options, ctx, runner));
     out.scene.planes = std::move(detected.planes);
     out.scene.memberships = std::move(detected.memberships);
     out.support = std::move(detected.support);

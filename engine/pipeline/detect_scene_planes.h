@@ -42,6 +42,7 @@ struct DetectedScene {
 /// @param auto_blocks when given and detect.block_size is 0, detection runs on cubes of the side
 /// this rule picks for the sanitised segments (by segments alone), or on the whole scene when the
 /// rule picks one block (then the result is the monolithic detection's).
+/// @param runner when given, runs the per-block RANSAC (DetectPlanes).
 /// @return the errors of SanitizeScene and DetectPlanes (kCancelled between the two).
 [[nodiscard]] Expected<DetectedScene> SanitizeAndDetectPlanes(
     Scene scene,
@@ -49,6 +50,7 @@ struct DetectedScene {
     const PlaneDetectionOptions& detect,
     const RunContext& ctx,
     StageTimer* timer = nullptr,
-    const partition::BlockSizeRule* auto_blocks = nullptr) noexcept;
+    const partition::BlockSizeRule* auto_blocks = nullptr,
+    detect::DetectionRunner* runner = nullptr) noexcept;
 
 }  // namespace linesurf::pipeline

@@ -100,11 +100,12 @@ ScenePlanes GivenPlanes(const Scene& input,
 ScenePlanes DetectedPlanes(const Scene& input,
                            const ReconstructOptions& options,
                            const RunContext& ctx,
-                           StageTimer& timer) {
+                           StageTimer& timer,
+                           detect::DetectionRunner* runner) {
   PlaneDetectionOptions detect = options.planes;
   detect.seed = options.seed;
   DetectedScene detected = ValueOrThrow(SanitizeAndDetectPlanes(
-      input, options.sanitize, detect, ctx, &timer, &options.detection_blocks));
+      input, options.sanitize, detect, ctx, &timer, &options.detection_blocks, runner));
   ScenePlanes out;
   out.detection = MakeDetectionStats(detected);
   out.plane_cap_warning = PlaneCapWarning(detected.detection_stats, detect.max_planes);
@@ -173,7 +174,8 @@ Status ReconstructOptions::Validate() const {
 
 Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
                                                        const ReconstructOptions& options,
-                                                       const RunContext& ctx) noexcept {
+                                                       const RunContext& ctx,
+                                                       detect::DetectionRunner* runner) noexcept {
   return CatchAll(kReconstructStage, [&]() -> PreparedReconstruction {
     if (Status s = options.Validate(); !s) throw LinesurfException(s.error());
     RunContext stage_ctx;
@@ -184,8 +186,9 @@ Expected<PreparedReconstruction> PrepareReconstruction(const Scene& input,
     ResultFacts& facts = prepared.facts;
     StageTimer timer;
 
-    ScenePlanes planes = options.use_given_planes ? GivenPlanes(input, options, stage_ctx, timer)
-                                                  : DetectedPlanes(input, options, stage_ctx, timer);
+    ScenePlanes planes = options.use_given_planes
+                             ? GivenPlanes(input, options, stage_ctx, timer)
+                             : DetectedPlanes(input, options, stage_ctx, timer, runner);
     Scene& scene = planes.scene;
     prepared.input_segment = std::move(planes.input_segment);
     prepared.warnings = std::move(planes.warnings);
@@ -399,9 +402,11 @@ Expected<ReconstructResult> SolvePrepared(const PreparedReconstruction& prepared
   });
 }
 
-Expected<ReconstructResult> Reconstruct(const Scene& input, const ReconstructOptions& options,
-                                        const RunContext& ctx) noexcept {
-  Expected<PreparedReconstruction> prepared = PrepareReconstruction(input, options, ctx);
+Expected<ReconstructResult> Reconstruct(const Scene& input,
+                                        const ReconstructOptions& options,
+                                        const RunContext& ctx,
+                                        detect::DetectionRunner* runner) noexcept {
+  Expected<PreparedReconstruction> prepared = PrepareReconstruction(input, options, ctx, runner);
   if (!prepared) return prepared.error();
   return SolvePrepared(*prepared, options, ctx);
 }

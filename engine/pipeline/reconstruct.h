@@ -143,9 +143,13 @@ struct PreparedReconstruction {
 };
 
 /// @brief The stages up to the cell complex (sanitise, planes, box, complex, scene mode).
+/// `runner`, when given, runs the per-block RANSAC of detection (detect/detection_run.h).
 /// @return kInvalidOptions, kInvalidInput, kDegenerate, kResourceExhausted, kCancelled.
 [[nodiscard]] Expected<PreparedReconstruction> PrepareReconstruction(
-    const Scene& scene, const ReconstructOptions& options, const RunContext& ctx) noexcept;
+    const Scene& scene,
+    const ReconstructOptions& options,
+    const RunContext& ctx,
+    detect::DetectionRunner* runner = nullptr) noexcept;
 
 /// @brief The stages from the evidence on (evidence, LP labelling, surface) with the energy,
 /// solver and output options of `options`; the preparation's own options are not consulted.
@@ -160,9 +164,12 @@ struct PreparedReconstruction {
 /// SolvePrepared.
 /// @return the stage's error: kInvalidOptions, kInvalidInput (nothing usable, no given planes),
 /// kDegenerate, kSolverFailed, kResourceExhausted, kCancelled. Never throws.
-/// Deterministic: same scene, options and seed give the same mesh for every num_threads.
-[[nodiscard]] Expected<ReconstructResult> Reconstruct(const Scene& scene,
-                                                      const ReconstructOptions& options,
-                                                      const RunContext& ctx) noexcept;
+/// Deterministic: same scene, options and seed give the same mesh for every num_threads, and
+/// for any `runner` (PrepareReconstruction).
+[[nodiscard]] Expected<ReconstructResult> Reconstruct(
+    const Scene& scene,
+    const ReconstructOptions& options,
+    const RunContext& ctx,
+    detect::DetectionRunner* runner = nullptr) noexcept;
 
 }  // namespace linesurf::pipeline

@@ -13,7 +13,6 @@ Python 3 standard library only. Scenes: the README example (house), synthetic ci
 """
 
 import argparse
-import datetime
 import json
 import math
 import os
@@ -23,6 +22,8 @@ import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from table_file import write_table  # noqa: E402
 SHARED = REPO.parent / "shared"
 AXIS = (1.0, 2.0, 3.0)
 # The moves: name, scale, degrees about AXIS.
@@ -166,40 +167,29 @@ def main():
     for index, (name, scene, ground_truth) in enumerate(scenes(work, args.linesurf)):
         rows += measure(args.linesurf, args.extra, work, "scene%d" % index, name, scene,
                         ground_truth)
-    commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "HEAD"], check=True,
-                            capture_output=True, text=True).stdout.strip()
-    now = datetime.datetime.now(datetime.timezone.utc)
-    table = {
-        "doc": "docs/design/real_data.md",
-        "title": "The same scene in another frame (reconstruct options: %s)"
-                 % (" ".join(args.extra) or "defaults"),
-        "measured": {
-            "date": now.strftime("%Y-%m-%d"), "time_utc": now.strftime("%H:%M"),
-            "machine": args.machine or os.uname().nodename, "commit": commit,
-            "command": "python3 tools/bench/frame_table.py --linesurf %s --workdir %s --name %s%s"
-                       % (os.path.relpath(args.linesurf, REPO), args.workdir, args.name,
-                          " -- " + " ".join(args.extra) if args.extra else "")},
-        "columns": [
-            {"key": "scene", "header": "scene"},
-            {"key": "move", "header": "moved by"},
-            {"key": "planes", "header": "planes: given frame / moved", "format": "{} / {}"},
-            {"key": "components", "header": "components", "format": "{} / {}"},
-            {"key": "fragments", "header": "floating fragments", "format": "{} / {}"},
-            {"key": "volume", "header": "volume moved back vs given", "format": "{:+.2f} %"},
-            {"key": "epsilon", "header": "eps (scene units of the given frame)",
-             "format": "{:.4g} / {:.4g}"},
-            {"key": "agreement",
-             "header": "moved-back result within 1 cm of the given frame's: precision / "
-                       "completeness", "format": "{:.1f} / {:.1f} %"},
-            {"key": "accuracy",
-             "header": "P / C at 5 cm against the ground truth: given frame; moved back",
-             "format": "{:.1f} / {:.1f}; {:.1f} / {:.1f} %"},
-        ],
-        "rows": rows,
-    }
-    out = REPO / "tools" / "bench" / "tables" / (args.name + ".json")
-    out.write_text(json.dumps(table, indent=2) + "\n", encoding="utf-8")
-    print("wrote", out)
+    title = ("The same scene in another frame (reconstruct options: %s)"
+               % (" ".join(args.extra) or "defaults"))
+    command = ("python3 tools/bench/frame_table.py --linesurf %s --workdir %s --name %s%s"
+               % (os.path.relpath(args.linesurf, REPO), args.workdir, args.name,
+               " -- " + " ".join(args.extra) if args.extra else ""))
+    columns = [
+        {"key": "scene", "header": "scene"},
+        {"key": "move", "header": "moved by"},
+        {"key": "planes", "header": "planes: given frame / moved", "format": "{} / {}"},
+        {"key": "components", "header": "components", "format": "{} / {}"},
+        {"key": "fragments", "header": "floating fragments", "format": "{} / {}"},
+        {"key": "volume", "header": "volume moved back vs given", "format": "{:+.2f} %"},
+        {"key": "epsilon", "header": "eps (scene units of the given frame)",
+         "format": "{:.4g} / {:.4g}"},
+        {"key": "agreement",
+         "header": "moved-back result within 1 cm of the given frame's: precision / "
+         "completeness", "format": "{:.1f} / {:.1f} %"},
+        {"key": "accuracy",
+         "header": "P / C at 5 cm against the ground truth: given frame; moved back",
+         "format": "{:.1f} / {:.1f}; {:.1f} / {:.1f} %"},
+    ]
+    write_table(args.name, "docs/design/real_data.md", title, command, columns, rows,
+                args.machine)
     return 0
 
 

@@ -12,7 +12,6 @@ Python 3 standard library (and python3-jsonschema for the schemas).
 """
 
 import argparse
-import datetime
 import json
 import os
 import subprocess
@@ -21,6 +20,8 @@ import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from table_file import write_table  # noqa: E402
 SHARED = REPO.parent / "shared"
 sys.path.insert(0, str(REPO / "tests" / "support"))
 import cityjson_check  # noqa: E402  (the tests' independent checker)
@@ -89,36 +90,24 @@ def main():
     work = Path(args.workdir)
     work.mkdir(parents=True, exist_ok=True)
     rows = [measure(args, work, key, name, path) for key, name, path in scenes(args, work)]
-    commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "HEAD"], check=True,
-                            capture_output=True, text=True).stdout.strip()
-    now = datetime.datetime.now(datetime.timezone.utc)
-    table = {
-        "doc": "docs/user/formats.md",
-        "title": "Validity of the outputs at defaults",
-        "measured": {
-            "date": now.strftime("%Y-%m-%d"), "time_utc": now.strftime("%H:%M"),
-            "machine": args.machine or os.uname().nodename, "commit": commit,
-            "command": "python3 tools/bench/validity_table.py --linesurf %s --workdir %s "
-                       "--cities %s --seed %d" % (os.path.relpath(args.linesurf, REPO),
-                                                  args.workdir, args.cities, args.seed)},
-        "columns": [
-            {"key": "scene", "header": "scene"},
-            {"key": "faces", "header": "PLY faces"},
-            {"key": "library", "header": "library checker: valid (defects)",
-             "format": "{valid} ({defects})"},
-            {"key": "coincident", "header": "coincident vertices"},
-            {"key": "touching", "header": "touching triangle pairs"},
-            {"key": "zero_area", "header": "zero-area faces"},
-            {"key": "pinch_cells", "header": "cells relabelled by the pinch repair"},
-            {"key": "cityjson", "header": "CityJSON: buildings, defects (independent checker), schema",
-             "format": "{buildings}, {defects}, {schema}"},
-            {"key": "seconds", "header": "s (PLY run)", "format": "{:.1f}"},
-        ],
-        "rows": rows,
-    }
-    out = REPO / "tools" / "bench" / "tables" / "validity.json"
-    out.write_text(json.dumps(table, indent=2) + "\n", encoding="utf-8")
-    print("wrote", out)
+    title = "Validity of the outputs at defaults"
+    command = ("python3 tools/bench/validity_table.py --linesurf %s --workdir %s "
+               "--cities %s --seed %d" % (os.path.relpath(args.linesurf, REPO),
+               args.workdir, args.cities, args.seed))
+    columns = [
+        {"key": "scene", "header": "scene"},
+        {"key": "faces", "header": "PLY faces"},
+        {"key": "library", "header": "library checker: valid (defects)",
+         "format": "{valid} ({defects})"},
+        {"key": "coincident", "header": "coincident vertices"},
+        {"key": "touching", "header": "touching triangle pairs"},
+        {"key": "zero_area", "header": "zero-area faces"},
+        {"key": "pinch_cells", "header": "cells relabelled by the pinch repair"},
+        {"key": "cityjson", "header": "CityJSON: buildings, defects (independent checker), schema",
+         "format": "{buildings}, {defects}, {schema}"},
+        {"key": "seconds", "header": "s (PLY run)", "format": "{:.1f}"},
+    ]
+    write_table("validity", "docs/user/formats.md", title, command, columns, rows, args.machine)
     return 0
 
 

@@ -22,6 +22,8 @@ enum ExitCode : int {
   kExitInvalidInput = 3,
   kExitFailed = 4,
   kExitCancelled = 5,
+  kExitUnitsPending = 6,  ///< reconstruct --work-dir: work units to run, then call again
+  kExitPartial = 7,       ///< work units failed on their own input: the result lacks their planes
   kExitInternal = 70,
 };
 

@@ -27,6 +27,7 @@ struct ReconstructArgs {
   SceneInputArgs source;
   std::string output;
   std::string report;
+  std::string work_dir;
   bool ascii = false;
   bool cityjson = false;
   GeoreferenceOptions georeference;
@@ -63,9 +64,28 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
   if (!read) return ReportError(read.error());
   for (const std::string& w : read->warnings) PrintWarning(common, w);
 
-  Expected<ReconstructResult> result =
-      Reconstruct(read->scene.View(), args.options, CliRunControl(common));
-  if (!result) return ReportError(result.error(), args.source.input);
+  std::optional<ReconstructResult> result;
+  std::size_t failed_units = 0;
+  if (args.work_dir.empty()) {
+    Expected<ReconstructResult> run =
+        Reconstruct(read->scene.View(), args.options, CliRunControl(common));
+    if (!run) return ReportError(run.error(), args.source.input);
+    result = std::move(*run);
+  } else {
+    Expected<WorkStep> step = ReconstructInWorkDirectory(read->scene.View(), args.options,
+                                                         args.work_dir, CliRunControl(common));
+    if (!step) return ReportError(step.error(), args.source.input);
+    if (!common.quiet) {
+      std::fprintf(stderr, "reconstruct: %zu work units, %zu already done, %zu pending\n",
+                   step->units, step->reused, step->pending.size());
+    }
+    if (!step->pending.empty()) {
+      for (const std::string& id : step->pending) std::printf("%s\n", id.c_str());
+      return kExitUnitsPending;
+    }
+    failed_units = step->failed.size();
+    result = std::move(*step->result);
+  }
   for (const std::string& w : result->warnings) PrintWarning(common, w);
   MeshWriteOptions write;
   write.ascii = args.ascii;  // faces are already triangles when --triangulate was given
@@ -123,7 +143,7 @@ int RunReconstruct(const CommonOptions& common, ReconstructArgs& args) {
       std::fputs(SurfaceQualitySummary(s.quality, "reconstruct: ").c_str(), stderr);
     }
   }
-  return kExitOk;
+  return failed_units > 0 ? kExitPartial : kExitOk;
 }
 
 }  // namespace
@@ -137,6 +157,10 @@ Command AddReconstructCommand(CLI::App& app, CommonOptions& common) {
   AddSceneInputOptions(*sub, args->source);
   sub->add_option("-o,--output", args->output, "Output mesh (.ply, .obj or .off)")->required();
   sub->add_option("--report", args->report, "Write the run report (JSON) here");
+  sub->add_option("--work-dir", args->work_dir,
+                  "Run per-block detection as work units in this directory: exit 6 and print "
+                  "the pending units (run them with `linesurf work-unit`, then this command "
+                  "again), or finish the run (exit 7 when some unit failed)");
   OptionRegistry& r = *(args->registry = std::make_unique<OptionRegistry>(*sub));
   r.AddOptions(args->options, {"num_threads"});  // num_threads: the global -j
   r.AddFlag("ascii", args->ascii, "ASCII PLY");

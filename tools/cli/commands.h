@@ -15,5 +15,6 @@ Command AddArrangeCommand(CLI::App& app, CommonOptions& common);
 Command AddDetectCommand(CLI::App& app, CommonOptions& common);
 Command AddReconstructCommand(CLI::App& app, CommonOptions& common);
 Command AddOptionsCommand(CLI::App& app, CommonOptions& common);
+Command AddWorkUnitCommand(CLI::App& app, CommonOptions& common);
 
 }  // namespace linesurf::cli

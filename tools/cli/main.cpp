@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   commands.push_back(AddDetectCommand(app, common));
   commands.push_back(AddReconstructCommand(app, common));
   commands.push_back(AddOptionsCommand(app, common));
+  commands.push_back(AddWorkUnitCommand(app, common));
   // Later subcommands register here (one cmd_<name>.cpp each).
   AddTypeChecks(app);
 

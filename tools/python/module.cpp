@@ -168,6 +168,23 @@ void WriteMeshArrays(const std::string& path,
   if (!written) RaiseError(written.error());
 }
 
+/// One work unit (linesurf/work_units.h) with the GIL released: the worker's other threads
+/// (Dask's heartbeats, other units) go on while it runs.
+py::dict RunWorkUnitInDirectory(const std::string& work_dir, const std::string& unit,
+                                int num_threads) {
+  Expected<WorkUnitInfo> run = [&] {
+    py::gil_scoped_release release;
+    return RunWorkUnit(work_dir, unit, num_threads);
+  }();
+  const WorkUnitInfo info = ValueOrRaise(std::move(run));
+  py::dict out;
+  out["id"] = info.id;
+  out["status"] = info.status;
+  out["reason"] = info.reason;
+  out["seconds"] = info.seconds;
+  return out;
+}
+
 }  // namespace
 }  // namespace linesurf::python
 
@@ -193,4 +210,6 @@ PYBIND11_MODULE(_linesurf, m) {
   m.def("prepare", &PrepareArrays);
   m.def("read_scene", &ReadSceneArrays);
   m.def("write_mesh", &WriteMeshArrays);
+  m.def("run_work_unit", &RunWorkUnitInDirectory, py::arg("work_dir"), py::arg("unit"),
+        py::arg("num_threads"));
 }

@@ -31,6 +31,7 @@
 #include "linesurf/run_control.h"
 #include "linesurf/types.h"
 #include "linesurf/version.h"
+#include "linesurf/work_units.h"
 
 #include <memory>
 #include <span>

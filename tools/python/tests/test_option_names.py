@@ -14,7 +14,7 @@ import support
 # The CLI's own options beside the library's (paths, report, output format, CRS, help).
 CLI_OWN_FLAGS = {
     "reconstruct": {"--help", "--output", "--report", "--config", "--nvm", "--colmap", "--ascii",
-                    "--cityjson", "--crs"},
+                    "--cityjson", "--crs", "--work-dir"},
     "detect": {"--help", "--output", "--report", "--config", "--nvm", "--colmap", "--vg"},
 }
 # DetectOptions: the detection group, the seed and the thread count.
