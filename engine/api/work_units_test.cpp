@@ -134,5 +134,16 @@ TEST(WorkUnits, AUnitTheManifestDoesNotListIsAnError) {
       << unknown.error().message;
 }
 
+TEST(WorkUnits, AWorkDirectoryThatCannotBeMadeIsInvalidInput) {
+  const std::filesystem::path file = testing::FreshTempDir() / "a-file";
+  std::ofstream(file) << "not a directory";
+  const ReadSceneResult house = House();
+  Expected<WorkStep> step = ReconstructInWorkDirectory(house.scene.View(), SmallDetectionBlocks(),
+                                                       (file / "run").string());
+  ASSERT_FALSE(step);
+  EXPECT_EQ(step.error().code, ErrorCode::kInvalidInput);
+  EXPECT_NE(step.error().message.find("a-file"), std::string::npos) << step.error().message;
+}
+
 }  // namespace
 }  // namespace linesurf

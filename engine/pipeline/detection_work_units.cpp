@@ -169,7 +169,10 @@ std::vector<detect::DetectionRunOutcome> DetectionWorkUnits::RunRound(
     const PlaneDetectionOptions& /*options: the units read the run's own*/,
     double epsilon,
     const RunContext& ctx) {
-  std::filesystem::create_directories(work_dir_ / "units");
+  std::error_code ec;
+  std::filesystem::create_directories(work_dir_ / "units", ec);
+  LINESURF_THROW_IF(ec, kInvalidInput, kWorkUnitsStage,
+                    "work directory " << work_dir_.string() << ": " << ec.message());
   std::vector<detect::DetectionRunOutcome> outcomes(round.size());
   bool pending = false;
   for (std::size_t i = 0; i < round.size(); ++i) {

@@ -13,17 +13,22 @@ find_package(OpenVDB REQUIRED COMPONENTS openvdb)
 
 find_package(CGAL 5.5 CONFIG REQUIRED)
 
+# CHOLMOD: only the solver benchmark's analysis of what a barrier would factor
+# (BM_CholmodAnalyze, docs/design/lp_backend.md); no library source calls it.
 # SuiteSparse 5.12 ships neither a CMake config nor pkg-config files.
-find_path(LINESURF_SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
-set(_linesurf_ss_libs)
-foreach(_ss cholmod amd colamd camd ccolamd suitesparseconfig)
-  find_library(LINESURF_SUITESPARSE_${_ss}_LIBRARY NAMES ${_ss} REQUIRED)
-  list(APPEND _linesurf_ss_libs ${LINESURF_SUITESPARSE_${_ss}_LIBRARY})
-endforeach()
-if(NOT TARGET SuiteSparse::cholmod)
-  add_library(SuiteSparse::cholmod INTERFACE IMPORTED)
-  target_include_directories(SuiteSparse::cholmod SYSTEM INTERFACE ${LINESURF_SUITESPARSE_INCLUDE_DIR})
-  target_link_libraries(SuiteSparse::cholmod INTERFACE ${_linesurf_ss_libs})
+if(LINESURF_BUILD_BENCHMARKS)
+  find_path(LINESURF_SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+  set(_linesurf_ss_libs)
+  foreach(_ss cholmod amd colamd camd ccolamd suitesparseconfig)
+    find_library(LINESURF_SUITESPARSE_${_ss}_LIBRARY NAMES ${_ss} REQUIRED)
+    list(APPEND _linesurf_ss_libs ${LINESURF_SUITESPARSE_${_ss}_LIBRARY})
+  endforeach()
+  if(NOT TARGET SuiteSparse::cholmod)
+    add_library(SuiteSparse::cholmod INTERFACE IMPORTED)
+    target_include_directories(SuiteSparse::cholmod SYSTEM INTERFACE
+      ${LINESURF_SUITESPARSE_INCLUDE_DIR})
+    target_link_libraries(SuiteSparse::cholmod INTERFACE ${_linesurf_ss_libs})
+  endif()
 endif()
 
 find_package(PkgConfig REQUIRED)
