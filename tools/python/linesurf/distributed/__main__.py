@@ -1,5 +1,6 @@
 """python3 -m linesurf.distributed INPUT -o OUT [--workers N | --scheduler ADDRESS |
---executor sequential|processes|mpi] [--work-dir DIR] [--threads-per-worker T] [--linesurf CLI]
+--executor sequential|processes|mpi] [--work-dir DIR] [--threads-per-worker T]
+[--step-threads T] [--linesurf CLI]
 [options of `linesurf reconstruct`]"""
 
 import argparse
@@ -33,6 +34,9 @@ def _parser():
     p.add_argument("--threads-per-worker", type=int, default=1,
                    help="threads of each unit (oneTBB's pool is not limited by Dask's "
                    "OMP_NUM_THREADS; default 1)")
+    p.add_argument("--step-threads", type=int, default=0,
+                   help="threads of the steps (the `linesurf reconstruct --work-dir` calls, which "
+                   "run every stage but the units; default 0: every core)")
     p.add_argument("--linesurf", default=os.environ.get("LINESURF_CLI") or shutil.which("linesurf"),
                    help="the linesurf executable (default: $LINESURF_CLI, then PATH)")
     return p
@@ -66,7 +70,8 @@ def main(argv=None):
     try:
         return run_distributed(args.linesurf, args.input, args.output,
                                args.work_dir or args.output + ".work", executor,
-                               reconstruct_args, args.threads_per_worker)
+                               reconstruct_args, args.threads_per_worker,
+                               step_threads=args.step_threads)
     finally:
         executor.close()
         if isinstance(executor, DaskExecutor):

@@ -13,16 +13,17 @@ EXIT_PARTIAL = 7
 
 
 def run_distributed(cli, input_path, output, work_dir, executor, reconstruct_args=(), threads=1,
-                    log=None):
+                    log=None, step_threads=0):
     """Runs the reconstruction of `input_path` into `output` over `work_dir`, the work units on
-    `executor` (executors.py), each with `threads` threads. Returns the exit code of the last
+    `executor` (executors.py), each with `threads` threads, the steps with `step_threads` (0 =
+    every core: they run the stages that are not units). Returns the exit code of the last
     `linesurf reconstruct` call (0 done, 7 done without the planes of failed units, other codes
     its errors) or EXIT_FAILED when a unit could not be run (UnitError, logged)."""
     from .executors import UnitError
     log = log or (lambda message: print(f"linesurf.distributed: {message}", file=sys.stderr,
                                         flush=True))
     work_dir = os.path.abspath(work_dir)
-    command = [cli, "-j", str(threads), "reconstruct", input_path, "-o", output,
+    command = [cli, "-j", str(step_threads), "reconstruct", input_path, "-o", output,
                "--work-dir", work_dir, *reconstruct_args]
     step = 0
     while True:
