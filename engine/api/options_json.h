@@ -67,7 +67,9 @@ Options ReadOptionsJson(const std::string& text, const std::string& stage) {
       if (read) field = *parsed;
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
       read = read && (value->is_null() || value->is_number());
-      if (read) field = value->is_null() ? std::nullopt : std::optional<double>(value->get<double>());
+      if (read) {
+        field = value->is_null() ? std::nullopt : std::optional<double>(value->get<double>());
+      }
     } else if constexpr (std::is_same_v<T, bool>) {
       read = read && value->is_boolean();
       if (read) field = value->get<bool>();

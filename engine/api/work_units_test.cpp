@@ -90,7 +90,8 @@ TEST(WorkUnits, ASecondRunReusesEveryUnitAndChangedOptionsPlanNewOnes) {
       ReconstructInWorkDirectory(house.scene.View(), options, dir.string());
   ASSERT_TRUE(one_thread && one_thread->result);
   options.seed = 7;
-  Expected<WorkStep> reseeded = ReconstructInWorkDirectory(house.scene.View(), options, dir.string());
+  Expected<WorkStep> reseeded =
+      ReconstructInWorkDirectory(house.scene.View(), options, dir.string());
   ASSERT_TRUE(reseeded) << reseeded.error().message;
   EXPECT_FALSE(reseeded->result);
   EXPECT_EQ(reseeded->reused, 0u);

@@ -62,10 +62,11 @@ struct WorkStep {
 /// manifest planned gets a failed result naming the reason (returned, not an error).
 /// @return kInvalidInput (no manifest, or no such unit in it), kCancelled (nothing written),
 /// kResourceExhausted, kInternal.
-[[nodiscard]] LINESURF_API Expected<WorkUnitInfo> RunWorkUnit(const std::string& work_dir,
-                                                             const std::string& unit,
-                                                             int num_threads = 0,
-                                                             const RunControl& control = {}) noexcept;
+[[nodiscard]] LINESURF_API Expected<WorkUnitInfo> RunWorkUnit(
+    const std::string& work_dir,
+    const std::string& unit,
+    int num_threads = 0,
+    const RunControl& control = {}) noexcept;
 
 }  // namespace v3
 }  // namespace linesurf
