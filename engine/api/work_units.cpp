@@ -21,18 +21,9 @@ namespace {
 
 constexpr const char* kWorkUnitStage = "work_unit";
 
-const char* StatusName(pipeline::WorkUnitStatus status) {
-  switch (status) {
-    case pipeline::WorkUnitStatus::kDone: return "done";
-    case pipeline::WorkUnitStatus::kFailed: return "failed";
-    case pipeline::WorkUnitStatus::kPending: return "pending";
-  }
-  return "pending";
-}
-
 WorkUnitInfo ToPublic(const pipeline::WorkUnitEntry& unit) {
   return WorkUnitInfo{.id = unit.id,
-                      .status = StatusName(unit.status),
+                      .status = pipeline::WorkUnitStatusName(unit.status),
                       .reason = unit.reason,
                       .seconds = unit.seconds};
 }

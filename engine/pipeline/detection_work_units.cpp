@@ -45,15 +45,6 @@ std::filesystem::path ResultPath(const std::filesystem::path& dir, const std::st
   return dir / "units" / (id + ".result.json");
 }
 
-const char* StatusName(WorkUnitStatus status) {
-  switch (status) {
-    case WorkUnitStatus::kPending: return "pending";
-    case WorkUnitStatus::kDone: return "done";
-    case WorkUnitStatus::kFailed: return "failed";
-  }
-  return "pending";
-}
-
 Json Vec3Json(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
 Vec3 Vec3Of(const Json& j) {
@@ -160,6 +151,15 @@ Json ManifestEntry(const std::filesystem::path& work_dir, const std::string& id)
 
 }  // namespace
 
+const char* WorkUnitStatusName(WorkUnitStatus status) {
+  switch (status) {
+    case WorkUnitStatus::kPending: return "pending";
+    case WorkUnitStatus::kDone: return "done";
+    case WorkUnitStatus::kFailed: return "failed";
+  }
+  return "pending";
+}
+
 DetectionWorkUnits::DetectionWorkUnits(std::filesystem::path work_dir, std::string options_json)
     : work_dir_(std::move(work_dir)), options_json_(std::move(options_json)) {}
 
@@ -216,7 +216,7 @@ void DetectionWorkUnits::WriteManifest() const {
   for (const WorkUnitEntry& u : units_) {
     units.push_back({{"id", u.id},
                      {"stage", u.stage},
-                     {"status", StatusName(u.status)},
+                     {"status", WorkUnitStatusName(u.status)},
                      {"input", "units/" + u.id + ".input.json"},
                      {"result", "units/" + u.id + ".result.json"},
                      {"input_hash", u.input_hash},

@@ -23,6 +23,9 @@ namespace linesurf::pipeline {
 
 enum class WorkUnitStatus { kPending, kDone, kFailed };
 
+/// "pending", "done" or "failed": the manifest's and the facade's spelling.
+[[nodiscard]] const char* WorkUnitStatusName(WorkUnitStatus status);
+
 /// A unit as the manifest lists it.
 struct WorkUnitEntry {
   std::string id;
