@@ -25,10 +25,11 @@ struct DetectionParameters {
   /// docs/design/plane_detection.md), so metric scenes, SfM units and noisier clouds need no value.
   /// Paper: 2 cm on metric scenes.
   std::optional<double> epsilon;
-  /// eps auto: eps = epsilon_over_noise x the robust noise scale of the endpoint-to-plane
-  /// residuals ((0, 20]; 2.5: the mean of two endpoint distances of a Gaussian segment stays
-  /// under 2.5 sigma with probability 99.9 %).
-  double epsilon_over_noise = 2.5;
+  /// eps auto: eps = epsilon_over_noise x the noise scale of the endpoint-to-plane residuals
+  /// ((0, 20]; 3: the mean of two endpoint distances of a Gaussian segment stays under 2.5 sigma
+  /// with probability 99.9 %, and the margin above it serves the split and real scenes of
+  /// docs/design/plane_detection.md, "eps from the data").
+  double epsilon_over_noise = 3.0;
   /// If set, eps = relative_epsilon x scene bounding-box diagonal instead of `epsilon`. Range
   /// (0, 0.5).
   std::optional<double> relative_epsilon;

@@ -28,9 +28,12 @@ struct EpsilonEstimate {
   /// of the scene's own planes), "probe" (residuals of probe detections) or "none" (no segment
   /// of positive length: eps 1, nothing to detect).
   std::string source;
-  /// Robust noise scale 1.4826 x median |endpoint-to-plane distance| (0 unless estimated).
+  /// Noise scale of the endpoint-to-plane distances (0 unless estimated): "planes", 1.4826 x
+  /// their median; "probe", the maximum-likelihood scale of the last probe's, truncated at its
+  /// tolerance as its inlier test truncates them.
   double noise_scale = 0.0;
   double initial_epsilon = 0.0;  ///< eps_0 of the probes (0 unless probed)
+  double probe_epsilon = 0.0;    ///< tolerance of the last probe (0 unless probed)
   int rounds = 0;                ///< probe detections run
   std::size_t residuals = 0;     ///< endpoint distances the scale was taken from
 };
