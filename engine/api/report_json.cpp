@@ -26,7 +26,6 @@ Json EpsilonJson(const EpsilonEstimate& e) {
           {"source", e.source},
           {"noise_scale", e.noise_scale},
           {"initial_epsilon", e.initial_epsilon},
-          {"probe_epsilon", e.probe_epsilon},
           {"rounds", e.rounds},
           {"residuals", e.residuals}};
 }

@@ -151,7 +151,6 @@ EpsilonEstimate Probe(const Scene& scene,
     out.rounds = round;
     out.residuals = 2 * scale.pairs;
     out.noise_scale = scale.sigma;
-    out.probe_epsilon = eps;
     if (scale.pairs == 0) break;  // nothing coplanar at this eps: keep it
     // A probe whose test passes most noisy lines at the estimated scale saw enough of the
     // noise; a narrower one saw a sliver of it, on planes refitted to that sliver (which biases

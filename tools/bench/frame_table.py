@@ -16,15 +16,13 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
-import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_scenes import evaluate, reconstruct, scenes  # noqa: E402
 from table_file import write_table  # noqa: E402
-SHARED = REPO.parent / "shared"
 AXIS = (1.0, 2.0, 3.0)
 # The moves: name, scale, degrees about AXIS.
 MOVES = [("x37.1", 37.1, 0.0), ("70 deg", 1.0, 70.0), ("x37.1, 70 deg", 37.1, 70.0)]
@@ -86,41 +84,6 @@ def obj_moved_back(m, src, dst):
                 out.write("v %r %r %r\n" % tuple(p))
             else:
                 out.write(line)
-
-
-def run(cmd):
-    subprocess.run([str(c) for c in cmd], check=True, stdout=subprocess.DEVNULL,
-                   stderr=subprocess.PIPE)
-
-
-def evaluate(linesurf, result, reference, threshold):
-    out = Path(str(result) + ".eval.json")
-    run([linesurf, "-q", "evaluate", result, reference, "--thresholds", threshold, "--json", out])
-    e = json.load(open(out))
-    return 100.0 * e["precision"][0], 100.0 * e["completeness"][0]
-
-
-def scenes(work, linesurf):
-    example = REPO / "docs" / "examples" / "house"
-    yield "README example (house)", example / "lines.json", example / "ground_truth.ply"
-    city = work / "city-16"
-    if not (city / "lines.json").exists():
-        run([linesurf, "synth", "city", "--size", "16", "--seed", "4016", "-o", city])
-    yield "synthetic city-16 (seed 4016)", city / "lines.json", city / "ground_truth.ply"
-    andalusian = SHARED / "data" / "andalusian" / "input_lines_from_residuals.json"
-    if andalusian.exists():
-        yield "Andalusian", andalusian, None
-    else:
-        print("frame_table: Andalusian absent from %s, skipped" % andalusian, file=sys.stderr)
-
-
-def reconstruct(linesurf, extra, scene, stem):
-    start = time.monotonic()
-    run([linesurf, "-q", "reconstruct", scene, "-o", str(stem) + ".obj",
-         "--report", str(stem) + ".json"] + extra)
-    report = json.load(open(str(stem) + ".json"))
-    report["seconds"] = time.monotonic() - start
-    return report
 
 
 def measure(linesurf, extra, work, key, name, scene, ground_truth):

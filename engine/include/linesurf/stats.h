@@ -33,7 +33,6 @@ struct EpsilonEstimate {
   /// tolerance as its inlier test truncates them.
   double noise_scale = 0.0;
   double initial_epsilon = 0.0;  ///< eps_0 of the probes (0 unless probed)
-  double probe_epsilon = 0.0;    ///< tolerance of the last probe (0 unless probed)
   int rounds = 0;                ///< probe detections run
   std::size_t residuals = 0;     ///< endpoint distances the scale was taken from
 };
