@@ -21,8 +21,8 @@ constexpr double kInitialOverMedianLength = 0.02;
 /// The estimate stays within [eps_0 / 8, 8 eps_0]: noise-free data would otherwise drive eps to
 /// zero, and a probe that merged everything would blow it up.
 constexpr double kMaxChange = 8.0;
-/// Probes stop when one spans a noise scale, when eps changes by less than this fraction, or
-/// after kMaxRounds.
+/// Probes stop when one covers the noise (kCoveredPassRate, kMinPairsForScale), when eps changes
+/// by less than this fraction, or after kMaxRounds.
 constexpr double kConvergence = 0.1;
 constexpr int kMaxRounds = 6;
 /// A probe covers the noise when its test passes this share of lines at the estimated scale

@@ -1,11 +1,12 @@
 #pragma once
 /// @file estimate_epsilon.h
 /// @brief The inlier tolerance eps from the data (`--epsilon auto`, docs/design/plane_detection.md):
-/// eps = k x the robust scale of the endpoint-to-plane residuals of the segments' planes. With
-/// given planes and memberships the residuals are theirs; otherwise a few probe detections find
-/// the largest planes, starting from eps_0 = 2 % of the median segment length and re-detecting
-/// with the new eps until it changes by less than 10 %. Every quantity is a length ratio, so a
-/// scene scaled by s gets s x eps.
+/// eps = k x the noise scale of the endpoint-to-plane residuals of the segments' planes. With
+/// given planes and memberships the residuals are theirs (scale from their median); otherwise
+/// probe detections find the largest planes, starting from eps_0 = 2 % of the median segment
+/// length, and the scale is the likelihood estimate of truncated_noise_scale.h; the probes widen
+/// until one covers the noise (or eps changes by less than 10 %). Every quantity is a length
+/// ratio, so a scene scaled by s gets s x eps.
 
 #include "linesurf/error.h"
 

@@ -4,7 +4,7 @@
 /// docs/design/plane_detection.md). A probe keeps a line on a plane only where the mean of its
 /// two endpoint distances is <= T, so its residuals are a truncated sample: their median or
 /// spread says as much about T as about the noise (flat residuals up to T give a scale
-/// proportional to T, and eps = 2.5 x scale then runs away). The maximum-likelihood scale of
+/// proportional to T, and eps taken from it runs away). The maximum-likelihood scale of
 /// the Gaussian truncated exactly as the test truncates recovers the noise from a probe whose T
 /// is anywhere above about half of it.
 

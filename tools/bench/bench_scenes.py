@@ -1,8 +1,11 @@
-"""What the bench scripts of docs/design/real_data.md share: running linesurf, its scenes (the
-README example, synthetic city-16 and Andalusian when ../shared/data holds it) and the figures
-taken from its reports and its evaluate command."""
+"""What the bench scripts of docs/design/real_data.md share: their arguments and the command
+line their tables record, running linesurf, its scenes (the README example, synthetic city-16 and
+Andalusian when ../shared/data holds it) and the figures taken from its reports and its evaluate
+command."""
 
+import argparse
 import json
+import os
 import subprocess
 import sys
 import time
@@ -10,6 +13,31 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 SHARED = REPO.parent / "shared"
+
+
+def arguments(description, name):
+    """The arguments every such script takes: --linesurf, --workdir, --machine, --name (default
+    `name`) and, after `--`, options of every `linesurf reconstruct`. Add its own, then parse."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--linesurf", default=str(REPO / "build" / "bin" / "linesurf"))
+    parser.add_argument("--workdir", required=True)
+    parser.add_argument("--machine", default="")
+    parser.add_argument("--name", default=name)
+    parser.add_argument("extra", nargs="*", help="options of linesurf reconstruct (after --)")
+    return parser
+
+
+def command_line(script, args, own=""):
+    """The command that reproduces a table of tools/bench/`script` run with `args` (`own`: its
+    own arguments, as typed)."""
+    return ("python3 tools/bench/%s --linesurf %s --workdir %s --name %s%s%s"
+            % (script, os.path.relpath(args.linesurf, REPO), args.workdir, args.name, own,
+               " -- " + " ".join(args.extra) if args.extra else ""))
+
+
+def options_text(args):
+    """The reconstruct options of a run, for a table's title."""
+    return " ".join(args.extra) or "defaults"
 
 
 def run(cmd):

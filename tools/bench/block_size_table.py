@@ -5,10 +5,10 @@ per block to the whole scene; detection automatic), then with the detection bloc
 (arrangement automatic), and each result is measured. Writes
 tools/bench/tables/NAME.json, which make_tables.py renders into docs/design/real_data.md.
 
-Figures: the labels' energy (report `solver.objective`), its spread over the sizes
-(max / min - 1, over the automatic run and one series), components and floating fragments; with ground truth, precision and completeness
-at 5 cm; without, data fit and visibility consistency at a fixed 2 cm (`evaluate --lines
---epsilon 0.01`: the fit distance is 2 eps).
+Figures: the labels' energy (report `solver.objective`), its spread over the sizes (max / min - 1,
+over the automatic run and one series), components and floating fragments; with ground truth,
+precision and completeness at 5 cm; without, data fit and visibility consistency at a fixed 2 cm
+(`evaluate --lines --epsilon 0.01`: the fit distance is 2 eps).
 
 Usage: tools/bench/block_size_table.py --linesurf build/bin/linesurf --workdir /tmp/bt
            [--name block-size] [--machine TEXT] [--city-sizes 30,60,130]
@@ -16,15 +16,14 @@ Usage: tools/bench/block_size_table.py --linesurf build/bin/linesurf --workdir /
 Python 3 standard library only.
 """
 
-import argparse
 import json
-import os
 import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_scenes import evaluate, reconstruct, run, scenes  # noqa: E402
+from bench_scenes import (arguments, command_line, evaluate, options_text,  # noqa: E402
+                          reconstruct, run, scenes)
 from table_file import write_table  # noqa: E402
 
 ACCURACY_M = 0.05
@@ -78,14 +77,9 @@ def measure(linesurf, extra, work, key, name, scene, ground_truth, sizes):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--linesurf", default=str(REPO / "build" / "bin" / "linesurf"))
-    parser.add_argument("--workdir", required=True)
-    parser.add_argument("--machine", default="")
-    parser.add_argument("--name", default="block-size")
+    parser = arguments(__doc__.splitlines()[0], "block-size")
     parser.add_argument("--city-sizes", default="30,60,130")
     parser.add_argument("--andalusian-sizes", default="6,20,80")
-    parser.add_argument("extra", nargs="*", help="options of linesurf reconstruct (after --)")
     args = parser.parse_args()
     work = Path(args.workdir)
     work.mkdir(parents=True, exist_ok=True)
@@ -96,13 +90,9 @@ def main():
         scene_sizes = sizes.get(name, [float(s) for s in args.city_sizes.split(",")])
         rows += measure(args.linesurf, args.extra, work, "scene%d" % index, name, scene,
                         ground_truth, scene_sizes)
-    title = ("The same scene cut into other blocks (reconstruct options: %s)"
-             % (" ".join(args.extra) or "defaults"))
-    command = ("python3 tools/bench/block_size_table.py --linesurf %s --workdir %s --name %s "
-               "--city-sizes %s --andalusian-sizes %s%s"
-               % (os.path.relpath(args.linesurf, REPO), args.workdir, args.name,
-                  args.city_sizes, args.andalusian_sizes,
-                  " -- " + " ".join(args.extra) if args.extra else ""))
+    title = "The same scene cut into other blocks (reconstruct options: %s)" % options_text(args)
+    command = command_line("block_size_table.py", args, " --city-sizes %s --andalusian-sizes %s"
+                           % (args.city_sizes, args.andalusian_sizes))
     columns = [
         {"key": "scene", "header": "scene"},
         {"key": "varied", "header": "size set"},

@@ -12,16 +12,15 @@ Python 3 standard library only. Scenes: the README example (house), synthetic ci
 (seed 4016) and Andalusian when ../shared/data holds it (skipped with a message otherwise).
 """
 
-import argparse
 import json
 import math
-import os
 import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_scenes import evaluate, reconstruct, scenes  # noqa: E402
+from bench_scenes import (arguments, command_line, evaluate, options_text,  # noqa: E402
+                          reconstruct, scenes)
 from table_file import write_table  # noqa: E402
 AXIS = (1.0, 2.0, 3.0)
 # The moves: name, scale, degrees about AXIS.
@@ -117,24 +116,15 @@ def measure(linesurf, extra, work, key, name, scene, ground_truth):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--linesurf", default=str(REPO / "build" / "bin" / "linesurf"))
-    parser.add_argument("--workdir", required=True)
-    parser.add_argument("--machine", default="")
-    parser.add_argument("--name", default="frame-dependence")
-    parser.add_argument("extra", nargs="*", help="options of linesurf reconstruct (after --)")
-    args = parser.parse_args()
+    args = arguments(__doc__.splitlines()[0], "frame-dependence").parse_args()
     work = Path(args.workdir)
     work.mkdir(parents=True, exist_ok=True)
     rows = []
     for index, (name, scene, ground_truth) in enumerate(scenes(work, args.linesurf)):
         rows += measure(args.linesurf, args.extra, work, "scene%d" % index, name, scene,
                         ground_truth)
-    title = ("The same scene in another frame (reconstruct options: %s)"
-               % (" ".join(args.extra) or "defaults"))
-    command = ("python3 tools/bench/frame_table.py --linesurf %s --workdir %s --name %s%s"
-               % (os.path.relpath(args.linesurf, REPO), args.workdir, args.name,
-               " -- " + " ".join(args.extra) if args.extra else ""))
+    title = "The same scene in another frame (reconstruct options: %s)" % options_text(args)
+    command = command_line("frame_table.py", args)
     columns = [
         {"key": "scene", "header": "scene"},
         {"key": "move", "header": "moved by"},

@@ -21,7 +21,6 @@ Exit status: 0, 1 when a run failed, 2 on bad usage. Python 3 standard library o
 
 import argparse
 import json
-import os
 import statistics
 import subprocess
 import sys
